@@ -1,0 +1,36 @@
+// Bulk field output: HDF5 + XDMF time series that ParaView opens.
+#pragma once
+
+#include <petscdm.h>
+#include <string>
+#include <vector>
+
+namespace poroseam {
+
+/// Writes vertex fields of the bulk mesh, one HDF5 file for the run plus an XDMF index that
+/// ParaView reads as a time series. The solution DM's local section has the field
+/// "displacement" (dim components on every vertex) and, when the scene has pressure, the
+/// field "pressure" (1 component, only on vertices of porous regions). Vertices without
+/// pressure are written as 0. Only bulk cells (not cohesive prisms) are written.
+class FieldWriter {
+public:
+  FieldWriter() = default;
+  FieldWriter(const FieldWriter &) = delete;
+  FieldWriter &operator=(const FieldWriter &) = delete;
+  ~FieldWriter();
+
+  /// Prepares `<dir>/<basename>.h5` and `<dir>/<basename>.xmf` for the solution DM.
+  PetscErrorCode open(DM solution_dm, const std::string &dir, const std::string &basename);
+  /// Appends one time: displacement, pressure (if any) and excess_pressure = pressure -
+  /// initial_pressure. `local_solution` and `local_initial` are local vectors of solution_dm
+  /// (with boundary values inserted); `local_initial` may be nullptr (then excess = pressure).
+  PetscErrorCode write(double time, Vec local_solution, Vec local_initial);
+  /// Finishes the XDMF index (also called by the destructor).
+  PetscErrorCode close();
+
+private:
+  struct Impl;
+  Impl *impl_ = nullptr;
+};
+
+} // namespace poroseam

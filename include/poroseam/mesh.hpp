@@ -1,0 +1,27 @@
+// Gmsh input and distribution of the DMPlex mesh.
+#pragma once
+
+#include "poroseam/scene.hpp"
+#include <petscdmplex.h>
+#include <string>
+#include <vector>
+
+namespace poroseam {
+
+/// Reads a Gmsh mesh (.msh, or .geo meshed with gmsh using the size factor) on rank 0 as an
+/// interpolated DMPlex, with labels "Cell Sets" and "Face Sets" holding the physical tags.
+/// `names` receives the physical names of the file (same on every rank); `dim` the mesh
+/// dimension. A `.geo` is meshed into `work_dir`.
+PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_factor,
+                            const std::string &work_dir, DM *dm, std::vector<PhysicalName> *names,
+                            int *dim);
+
+/// Distributes the mesh (partitioner from -petscpartitioner_type, ptscotch by default) and
+/// replaces *dm by the distributed one. Labels travel with the points.
+PetscErrorCode distributeMesh(DM *dm);
+
+/// Stops with a clear error when a bulk cell has a non-positive Jacobian determinant
+/// (inverted element), naming the cell and its centroid.
+PetscErrorCode checkCellOrientation(DM dm);
+
+} // namespace poroseam

@@ -1,0 +1,86 @@
+// The discrete problem on a distributed mesh: element loops over DMPlex closures for the
+// residual and Jacobian of quasi-static Biot consolidation with elastic regions, boundary
+// values, and the initial (geostatic) state. Point laws come from physics/.
+#pragma once
+
+#include "poroseam/reference_element.hpp"
+#include "poroseam/scene.hpp"
+#include <petscdmplex.h>
+#include <map>
+#include <vector>
+
+namespace poroseam {
+
+/// How a residual is evaluated.
+struct ResidualMode {
+  /// Factor on the mass balance. The solver uses -dt, which turns the coupled system into a
+  /// symmetric saddle point (and keeps both rows in force-like units); 1 gives fluid volume
+  /// rates [m3/s] for output.
+  double mass_scale = 1.0;
+  /// Include applied tractions and fluxes. Without them the residual at a vertex is the
+  /// force (and water rate) the surroundings exert on the body there: reactions and outflows.
+  bool include_loads = true;
+};
+
+class Problem {
+public:
+  /// Precomputes cell and face lists, reference elements and boundary-value offsets.
+  /// The DM must already have its solution section (createSolutionSection).
+  PetscErrorCode setup(DM dm, const Scene &scene);
+
+  /// Local vector with the initial state: zero displacement, hydrostatic (or zero) pressure.
+  PetscErrorCode initialState(Vec local) const;
+
+  /// Writes the prescribed values at time t into the constrained entries of `local`, and
+  /// their rates (value(t) - previous) / dt into `local_rate` (if given).
+  PetscErrorCode insertBoundaryValues(double t, double dt, Vec previous, Vec local,
+                                      Vec local_rate) const;
+
+  /// F(x, xdot) assembled into the local vector f (zeroed here).
+  PetscErrorCode residual(double t, Vec local, Vec local_rate, const ResidualMode &mode,
+                          Vec f) const;
+  /// dF/dx + shift dF/dxdot assembled into J (zeroed here), with mass_scale as in residual.
+  PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate, double mass_scale,
+                          Mat J) const;
+
+  /// Load factor shown in progress lines: the first ramped or tabulated condition, else 1.
+  double loadFactor(double t) const;
+
+  const Scene &scene() const { return *scene_; }
+  DM dm() const { return dm_; }
+
+  /// Initial pore pressure at a point (hydrostatic below the water level when gravity is on).
+  double initialPressure(const double x[]) const;
+
+private:
+  struct BulkCell {
+    PetscInt cell;
+    int region;
+    int element;
+    double size; ///< h for the stabilisation
+  };
+  struct LoadedFace {
+    PetscInt face;
+    int condition;
+    int element;
+  };
+  struct ConstrainedDof {
+    PetscInt offset; ///< in the local vector
+    int condition;
+  };
+
+  PetscErrorCode elementIndex(DMPolytopeType type, int *index);
+  void initialStress(const double x[], int region, double stress[3][3]) const;
+  double gravityVector(int d) const;
+
+  DM dm_ = nullptr;
+  const Scene *scene_ = nullptr;
+  int dim_ = 0;
+  std::vector<ReferenceElement> elements_;
+  std::map<int, int> element_of_type_;
+  std::vector<BulkCell> cells_;
+  std::vector<LoadedFace> faces_;
+  std::vector<ConstrainedDof> constrained_;
+};
+
+} // namespace poroseam

@@ -1,0 +1,98 @@
+// A scene: everything an options file says about the model (mesh, regions, materials,
+// boundary conditions, gravity, initial state, outputs). Built from PETSc options, checked
+// against the mesh's Gmsh physical names; knows nothing of DMPlex.
+#pragma once
+
+#include "poroseam/time_function.hpp"
+#include <petscsys.h>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace poroseam {
+
+/// A Gmsh physical group: name, dimension and tag.
+struct PhysicalName {
+  int dim = 0;
+  int tag = 0;
+  std::string name;
+};
+
+enum class MaterialModel { elastic, biot };
+
+struct Region {
+  std::string name;
+  int tag = 0; ///< value in the "Cell Sets" label
+  MaterialModel model = MaterialModel::elastic;
+  double young = 0.0;           ///< E [Pa]
+  double poisson = 0.0;         ///< nu [-]
+  double solid_density = 0.0;   ///< rho_s [kg/m3]
+  double porosity = 0.0;        ///< n [-] (biot)
+  double permeability = 0.0;    ///< intrinsic k [m2] (biot)
+  double biot_coefficient = 1.0; ///< alpha [-] (biot)
+  double storage = 0.0;         ///< 1/M [1/Pa] (biot)
+  double k0 = 1.0;              ///< earth pressure coefficient at rest (geostatic state)
+  bool porous() const { return model == MaterialModel::biot; }
+};
+
+enum class BcKind { displacement, pressure, traction, flux };
+
+struct BoundaryCondition {
+  std::string boundary; ///< Gmsh physical name
+  int tag = 0;          ///< value in the "Face Sets" label
+  BcKind kind = BcKind::displacement;
+  int component = 0;          ///< displacement component (0 = x) for kind displacement
+  std::vector<double> value;  ///< magnitude: 1 entry, or dim entries for a traction
+  TimeFunction time = TimeFunction::step();
+  std::string option;         ///< the option that defined it, for messages
+  bool dirichlet() const { return kind == BcKind::displacement || kind == BcKind::pressure; }
+};
+
+struct Boundary {
+  std::string name;
+  int tag = 0;
+};
+
+struct Probe {
+  std::string name;
+  std::array<double, 3> x{{0, 0, 0}};
+};
+
+struct Scene {
+  std::string mesh_file;
+  double mesh_size_factor = 1.0;
+  int dim = 0; ///< from the mesh
+
+  std::vector<Region> regions;
+  std::vector<Boundary> boundaries;
+  std::vector<BoundaryCondition> conditions;
+
+  bool drained = false;           ///< no pressure unknowns anywhere
+  double gravity = 0.0;           ///< g [m/s2], along -y (2D) or -z (3D); 0 switches it off
+  bool geostatic = false;         ///< K0 initial state
+  double surface_elevation = 0.0; ///< soil surface [m] for the geostatic state
+  double water_level = 0.0;       ///< phreatic level [m] for the hydrostatic pressure
+  double fluid_density = 1000.0;  ///< rho_w [kg/m3]
+  double fluid_viscosity = 1e-3;  ///< mu_w [Pa s]
+  double stabilization_factor = 0.25;
+
+  std::string output_dir = "output";
+  int output_every = 1; ///< field output every n steps, 0 for none
+  std::vector<Probe> probes;
+
+  bool hasPressure() const;
+  int regionIndexOfTag(int tag) const; ///< -1 when no region has this tag
+};
+
+/// Reads the mesh-independent part (mesh file name and size factor).
+PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene);
+
+/// Reads everything else and checks names against the mesh's physical groups.
+/// Every problem is reported as PETSC_ERR_USER_INPUT with the option and value named.
+PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
+                                Scene &scene);
+
+/// Writes the documentation of every scene option (for -help).
+void printSceneHelp(MPI_Comm comm);
+
+} // namespace poroseam

@@ -1,0 +1,34 @@
+// Time dependence of a boundary condition: value(t) = magnitude * factor(t).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace poroseam {
+
+class TimeFunction {
+public:
+  enum class Kind { step, ramp, table };
+
+  /// Constant magnitude, switched on at t = 0+ (factor 0 at t <= 0, 1 after).
+  static TimeFunction step();
+  /// Linear from 0 at t = 0 to 1 at t = ramp_time, then held.
+  static TimeFunction ramp(double ramp_time);
+  /// Piecewise linear through (time, factor) pairs, held constant beyond the last one.
+  static TimeFunction table(std::vector<double> times, std::vector<double> factors);
+
+  double factor(double t) const;
+  Kind kind() const { return kind_; }
+
+private:
+  Kind kind_ = Kind::step;
+  double ramp_time_ = 0.0;
+  std::vector<double> times_, factors_;
+};
+
+/// Reads a two-column table "time,factor" (header line optional, '#' comments).
+/// Returns an empty string on success, otherwise an error message naming the file and line.
+std::string readTimeTable(const std::string &path, std::vector<double> &times,
+                          std::vector<double> &factors);
+
+} // namespace poroseam

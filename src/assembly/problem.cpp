@@ -1,0 +1,494 @@
+#include "poroseam/problem.hpp"
+
+#include "poroseam/biot.hpp"
+#include "poroseam/collective_check.hpp"
+#include "poroseam/elastic.hpp"
+#include "poroseam/layout.hpp"
+
+#include <petscsf.h>
+#include <cmath>
+#include <sstream>
+
+namespace poroseam {
+namespace {
+
+/// Measure of quadrature point q of a face element embedded in space of dimension `space`.
+double faceWeight(const ReferenceElement &e, const double *coords, int space, int q)
+{
+  const double *dphi = &e.basis_derivatives[q * e.num_vertices * e.dim];
+  double t[2][3] = {{0, 0, 0}, {0, 0, 0}};
+  for (int k = 0; k < e.dim; ++k)
+    for (int a = 0; a < e.num_vertices; ++a)
+      for (int r = 0; r < space; ++r) t[k][r] += coords[a * space + r] * dphi[a * e.dim + k];
+  double measure;
+  if (e.dim == 0) measure = 1.0;
+  else if (e.dim == 1) measure = std::sqrt(t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2]);
+  else {
+    const double n[3] = {t[0][1] * t[1][2] - t[0][2] * t[1][1], t[0][2] * t[1][0] - t[0][0] * t[1][2],
+                         t[0][0] * t[1][1] - t[0][1] * t[1][0]};
+    measure = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  }
+  return e.quadrature_weights[q] * measure;
+}
+
+/// Cell size h = (d! V)^(1/d) for simplices, V^(1/d) for tensor cells: the edge of the
+/// square or cube the cell was cut from.
+double cellSize(const ReferenceElement &e, double volume)
+{
+  const double factorial = e.dim == 2 ? 2.0 : e.dim == 3 ? 6.0 : 1.0;
+  return std::pow(e.simplex ? factorial * volume : volume, 1.0 / e.dim);
+}
+
+struct Closure {
+  int nv = 0;      // vertices
+  int np = 0;      // vertices with a pressure dof
+  int size = 0;    // nv * dim + np
+};
+
+} // namespace
+
+PetscErrorCode Problem::elementIndex(DMPolytopeType type, int *index)
+{
+  PetscFunctionBeginUser;
+  auto it = element_of_type_.find((int)type);
+  if (it == element_of_type_.end()) {
+    ReferenceElement e;
+    PetscCall(ReferenceElement::create(type, &e));
+    elements_.push_back(e);
+    it = element_of_type_.emplace((int)type, (int)elements_.size() - 1).first;
+  }
+  *index = it->second;
+  PetscFunctionReturn(0);
+}
+
+double Problem::gravityVector(int d) const { return d == dim_ - 1 ? -scene_->gravity : 0.0; }
+
+double Problem::initialPressure(const double x[]) const
+{
+  if (scene_->gravity <= 0.0) return 0.0;
+  return scene_->fluid_density * scene_->gravity * (scene_->water_level - x[dim_ - 1]);
+}
+
+void Problem::initialStress(const double x[], int region, double stress[3][3]) const
+{
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) stress[i][j] = 0.0;
+  const Region &r = scene_->regions[region];
+  if (!scene_->geostatic || !r.porous()) return;
+  // K0 state: sigma'_v = -gamma' depth below the surface, sigma'_h = K0 sigma'_v.
+  const double rho_sat =
+      physics::saturatedDensity(r.porosity, r.solid_density, scene_->fluid_density);
+  const double buoyant = (rho_sat - scene_->fluid_density) * scene_->gravity;
+  const double depth = std::max(0.0, scene_->surface_elevation - x[dim_ - 1]);
+  const double vertical = -buoyant * depth;
+  for (int i = 0; i < 3; ++i) stress[i][i] = r.k0 * vertical;
+  stress[dim_ - 1][dim_ - 1] = vertical;
+}
+
+double Problem::loadFactor(double t) const
+{
+  for (const auto &bc : scene_->conditions)
+    if (bc.time.kind() != TimeFunction::Kind::step) return bc.time.factor(t);
+  return t > 0.0 ? 1.0 : 0.0;
+}
+
+PetscErrorCode Problem::setup(DM dm, const Scene &scene)
+{
+  MPI_Comm comm;
+  PetscFunctionBeginUser;
+  dm_ = dm;
+  scene_ = &scene;
+  dim_ = scene.dim;
+  PetscCall(PetscObjectGetComm((PetscObject)dm, &comm));
+  cells_.clear();
+  faces_.clear();
+  constrained_.clear();
+
+  DMLabel cellSets;
+  PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
+  Vec coords;
+  PetscSection csec;
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  std::string error;
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(dm, c, &ct));
+    PetscInt tag = -1;
+    if (cellSets) PetscCall(DMLabelGetValue(cellSets, c, &tag));
+    const int region = scene.regionIndexOfTag((int)tag);
+    if (region < 0) {
+      std::ostringstream msg;
+      msg << "cell " << c << " belongs to no region listed in -regions (its Gmsh physical tag is "
+          << tag << "); every cell of the mesh needs a region with a material";
+      error = msg.str();
+      break;
+    }
+    BulkCell bc{c, region, 0, 0.0};
+    PetscCall(elementIndex(ct, &bc.element));
+    const ReferenceElement &e = elements_[bc.element];
+    PetscScalar *x = nullptr;
+    PetscInt n = 0;
+    PetscCall(DMPlexVecGetClosure(dm, csec, coords, c, &n, &x));
+    double volume = 0.0;
+    PointGeometry g;
+    for (int q = 0; q < e.num_quadrature; ++q) {
+      mapQuadraturePoint(e, x, q, g);
+      volume += g.weight;
+    }
+    PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
+    bc.size = cellSize(e, volume);
+    cells_.push_back(bc);
+  }
+  PetscCall(checkOnAllRanks(comm, error));
+
+  // Faces carrying tractions or fluxes: integrated once, by the rank that owns the face.
+  PetscSF sf;
+  PetscInt nleaves;
+  const PetscInt *leaves;
+  PetscCall(DMGetPointSF(dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
+  PetscInt pStart, pEnd;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  std::vector<char> ghost(pEnd - pStart, 0);
+  for (PetscInt i = 0; i < (nleaves > 0 ? nleaves : 0); ++i)
+    ghost[(leaves ? leaves[i] : i) - pStart] = 1;
+  DMLabel faceSets;
+  PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
+  for (size_t i = 0; i < scene.conditions.size(); ++i) {
+    const auto &bc = scene.conditions[i];
+    if (bc.dirichlet() || !faceSets) continue;
+    IS faces = nullptr;
+    PetscCall(DMLabelGetStratumIS(faceSets, bc.tag, &faces));
+    if (!faces) continue;
+    const PetscInt *idx;
+    PetscInt n;
+    PetscCall(ISGetLocalSize(faces, &n));
+    PetscCall(ISGetIndices(faces, &idx));
+    for (PetscInt k = 0; k < n; ++k) {
+      if (ghost[idx[k] - pStart]) continue;
+      DMPolytopeType ct;
+      PetscCall(DMPlexGetCellType(dm, idx[k], &ct));
+      LoadedFace f{idx[k], (int)i, 0};
+      PetscCall(elementIndex(ct, &f.element));
+      faces_.push_back(f);
+    }
+    PetscCall(ISRestoreIndices(faces, &idx));
+    PetscCall(ISDestroy(&faces));
+  }
+
+  // Local offsets of constrained dofs and the condition that sets each.
+  PetscSection s;
+  PetscCall(DMGetLocalSection(dm, &s));
+  PetscInt numFields;
+  PetscCall(PetscSectionGetNumFields(s, &numFields));
+  for (size_t i = 0; i < scene.conditions.size(); ++i) {
+    const auto &bc = scene.conditions[i];
+    if (!bc.dirichlet()) continue;
+    DMLabel label;
+    PetscCall(DMGetLabel(dm, boundaryLabelName(bc.boundary).c_str(), &label));
+    IS points = nullptr;
+    PetscCall(DMLabelGetStratumIS(label, 1, &points));
+    if (!points) continue;
+    const PetscInt *idx;
+    PetscInt n;
+    PetscCall(ISGetLocalSize(points, &n));
+    PetscCall(ISGetIndices(points, &idx));
+    const int field = bc.kind == BcKind::pressure ? kPressureField : kDisplacementField;
+    for (PetscInt k = 0; k < n; ++k) {
+      PetscInt dof = 0, off = 0;
+      if (field >= numFields) continue;
+      PetscCall(PetscSectionGetFieldDof(s, idx[k], field, &dof));
+      if (!dof) continue;
+      PetscCall(PetscSectionGetFieldOffset(s, idx[k], field, &off));
+      constrained_.push_back({off + (field == kDisplacementField ? bc.component : 0), (int)i});
+    }
+    PetscCall(ISRestoreIndices(points, &idx));
+    PetscCall(ISDestroy(&points));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::initialState(Vec local) const
+{
+  PetscSection s, csec;
+  Vec coords;
+  const PetscScalar *x;
+  PetscScalar *u;
+  PetscInt vStart, vEnd, numFields;
+  PetscFunctionBeginUser;
+  PetscCall(VecSet(local, 0.0));
+  PetscCall(DMGetLocalSection(dm_, &s));
+  PetscCall(PetscSectionGetNumFields(s, &numFields));
+  if (numFields <= kPressureField) PetscFunctionReturn(0);
+  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
+  PetscCall(DMGetCoordinateSection(dm_, &csec));
+  PetscCall(DMPlexGetDepthStratum(dm_, 0, &vStart, &vEnd));
+  PetscCall(VecGetArrayRead(coords, &x));
+  PetscCall(VecGetArray(local, &u));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt dof, off, coff;
+    PetscCall(PetscSectionGetFieldDof(s, v, kPressureField, &dof));
+    if (!dof) continue;
+    PetscCall(PetscSectionGetFieldOffset(s, v, kPressureField, &off));
+    PetscCall(PetscSectionGetOffset(csec, v, &coff));
+    u[off] = initialPressure(&x[coff]);
+  }
+  PetscCall(VecRestoreArray(local, &u));
+  PetscCall(VecRestoreArrayRead(coords, &x));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::insertBoundaryValues(double t, double dt, Vec previous, Vec local,
+                                             Vec local_rate) const
+{
+  PetscScalar *u, *rate = nullptr;
+  const PetscScalar *prev;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(local, &u));
+  PetscCall(VecGetArrayRead(previous, &prev));
+  if (local_rate) PetscCall(VecGetArray(local_rate, &rate));
+  for (const auto &c : constrained_) {
+    const auto &bc = scene_->conditions[c.condition];
+    u[c.offset] = bc.value[0] * bc.time.factor(t);
+    if (rate) rate[c.offset] = dt > 0.0 ? (u[c.offset] - prev[c.offset]) / dt : 0.0;
+  }
+  if (local_rate) PetscCall(VecRestoreArray(local_rate, &rate));
+  PetscCall(VecRestoreArrayRead(previous, &prev));
+  PetscCall(VecRestoreArray(local, &u));
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+/// Everything the cell kernel needs about one cell's material.
+struct CellMaterial {
+  physics::ElasticModuli moduli;
+  physics::BiotProperties biot;
+  double density = 0.0; ///< rho_sat for porous regions, rho_s otherwise
+  bool porous = false;  ///< region is porous
+  double stabilization = 0.0;
+};
+
+/// Residual and (optionally) Jacobian of one bulk cell, from its closure values. Layout of
+/// the closure (PETSc orders closures field by field): nv*dim displacements, then np
+/// pressures (np = nv in porous regions). The kernel reads like the weak form:
+///   R_u = int (sigma'_0 + C:eps(u) - alpha p I) : grad v - rho g . v
+///   R_p = s int psi (alpha div u_t + p_t/M) - grad psi . q + beta grad psi . grad p_t
+/// with q = -(k/mu_w)(grad p - rho_w g) and s the mass scale.
+struct CellKernel {
+  const ReferenceElement &e;
+  int dim;
+  const CellMaterial &m;
+  bool with_pressure; // the cell assembles the mass balance (porous and not drained)
+  double mass_scale;
+  double gravity[3];
+
+  template <class InitialStress, class InitialPressure>
+  void operator()(const double *coords, const double *x, const double *xdot, int closure_size,
+                  InitialStress &&stress0, InitialPressure &&pressure0, double *F, double shift,
+                  double *J) const
+  {
+    const int nv = e.num_vertices, nu = nv * dim;
+    for (int q = 0; q < e.num_quadrature; ++q) {
+      PointGeometry g;
+      mapQuadraturePoint(e, coords, q, g);
+      const double w = g.weight, *phi = g.phi, *dphi = g.grad_phi;
+      double eps[3][3] = {{0}}, sigma[3][3];
+      for (int a = 0; a < nv; ++a)
+        for (int i = 0; i < dim; ++i)
+          for (int j = 0; j < dim; ++j) {
+            const double c = 0.5 * x[a * dim + i] * dphi[a * dim + j];
+            eps[i][j] += c;
+            eps[j][i] += c;
+          }
+      physics::elasticStress(m.moduli, eps, sigma);
+      double s0[3][3];
+      stress0(g.x, s0);
+      double p = 0.0, pdot = 0.0, grad_p[3] = {0, 0, 0}, grad_pdot[3] = {0, 0, 0}, div_udot = 0.0;
+      if (with_pressure) {
+        for (int a = 0; a < nv; ++a) {
+          p += phi[a] * x[nu + a];
+          pdot += phi[a] * xdot[nu + a];
+          for (int d = 0; d < dim; ++d) {
+            grad_p[d] += dphi[a * dim + d] * x[nu + a];
+            grad_pdot[d] += dphi[a * dim + d] * xdot[nu + a];
+            div_udot += dphi[a * dim + d] * xdot[a * dim + d];
+          }
+        }
+      } else if (m.porous) {
+        p = pressure0(g.x); // drained: the pore pressure keeps its initial value
+      }
+      const double alpha = m.porous ? m.biot.biot_coefficient : 0.0;
+      for (int a = 0; a < nv; ++a)
+        for (int i = 0; i < dim; ++i) {
+          double r = -m.density * gravity[i] * phi[a];
+          for (int j = 0; j < dim; ++j)
+            r += (s0[i][j] + sigma[i][j] - (i == j ? alpha * p : 0.0)) * dphi[a * dim + j];
+          F[a * dim + i] += w * r;
+        }
+      if (with_pressure) {
+        double flux[3];
+        physics::darcyFlux(m.biot, dim, grad_p, gravity, flux);
+        const double content = physics::fluidContentRate(m.biot, div_udot, pdot);
+        for (int a = 0; a < nv; ++a) {
+          double r = phi[a] * content;
+          for (int d = 0; d < dim; ++d)
+            r += dphi[a * dim + d] * (-flux[d] + m.stabilization * grad_pdot[d]);
+          F[nu + a] += mass_scale * w * r;
+        }
+      }
+      if (!J) continue;
+      const int S = closure_size;
+      for (int a = 0; a < nv; ++a)
+        for (int b = 0; b < nv; ++b) {
+          for (int i = 0; i < dim; ++i)
+            for (int k = 0; k < dim; ++k) {
+              double v = 0.0;
+              for (int j = 0; j < dim; ++j)
+                for (int l = 0; l < dim; ++l)
+                  v += dphi[a * dim + j] * physics::elasticTangent(m.moduli, i, j, k, l) *
+                       dphi[b * dim + l];
+              J[(a * dim + i) * S + b * dim + k] += w * v;
+            }
+          if (!with_pressure) continue;
+          double grad_grad = 0.0;
+          for (int d = 0; d < dim; ++d) grad_grad += dphi[a * dim + d] * dphi[b * dim + d];
+          for (int i = 0; i < dim; ++i) {
+            J[(a * dim + i) * S + nu + b] += -w * alpha * dphi[a * dim + i] * phi[b];
+            J[(nu + a) * S + b * dim + i] += mass_scale * w * shift * alpha * phi[a] * dphi[b * dim + i];
+          }
+          J[(nu + a) * S + nu + b] +=
+              mass_scale * w *
+              (shift * (m.biot.storage * phi[a] * phi[b] + m.stabilization * grad_grad) +
+               m.biot.mobility * grad_grad);
+        }
+    }
+  }
+};
+
+CellMaterial materialOf(const Scene &scene, const Region &r, double cell_size)
+{
+  CellMaterial m;
+  m.moduli = physics::lameFromYoung(r.young, r.poisson);
+  m.porous = r.porous();
+  if (m.porous) {
+    m.biot.biot_coefficient = r.biot_coefficient;
+    m.biot.storage = r.storage;
+    m.biot.mobility = r.permeability / scene.fluid_viscosity;
+    m.biot.fluid_density = scene.fluid_density;
+    m.density = physics::saturatedDensity(r.porosity, r.solid_density, scene.fluid_density);
+    m.stabilization =
+        physics::stabilizationParameter(m.biot, m.moduli, cell_size, scene.stabilization_factor);
+  } else {
+    m.density = r.solid_density;
+  }
+  return m;
+}
+
+} // namespace
+
+PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const ResidualMode &mode,
+                                 Vec f) const
+{
+  PetscSection s, csec;
+  Vec coords;
+  PetscFunctionBeginUser;
+  PetscCall(VecSet(f, 0.0));
+  PetscCall(DMGetLocalSection(dm_, &s));
+  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
+  PetscCall(DMGetCoordinateSection(dm_, &csec));
+  const bool pressure = scene_->hasPressure();
+  std::vector<double> F;
+  for (const auto &cell : cells_) {
+    const ReferenceElement &e = elements_[cell.element];
+    const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
+    PetscScalar *x = nullptr, *xdot = nullptr, *xc = nullptr;
+    PetscInt n = 0, nd = 0, nc = 0;
+    PetscCall(DMPlexVecGetClosure(dm_, s, local, cell.cell, &n, &x));
+    PetscCall(DMPlexVecGetClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
+    PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
+    F.assign(n, 0.0);
+    CellKernel kernel{e, dim_, m, pressure && m.porous, mode.mass_scale, {0, 0, 0}};
+    for (int d = 0; d < dim_; ++d) kernel.gravity[d] = gravityVector(d);
+    kernel(
+        xc, x, xdot, (int)n, [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
+        [&](const double *p) { return initialPressure(p); }, F.data(), 0.0, nullptr);
+    PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell.cell, &nc, &xc));
+    PetscCall(DMPlexVecRestoreClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
+    PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &x));
+    // ADD_ALL_VALUES keeps the entries of constrained dofs: they are the reactions.
+    PetscCall(DMPlexVecSetClosure(dm_, s, f, cell.cell, F.data(), ADD_ALL_VALUES));
+  }
+  if (!mode.include_loads) PetscFunctionReturn(0);
+  // Natural conditions: R_u -= int t . v, R_p += s int psi q_n.
+  for (const auto &face : faces_) {
+    const auto &bc = scene_->conditions[face.condition];
+    const ReferenceElement &e = elements_[face.element];
+    const double factor = bc.time.factor(t);
+    PetscScalar *xc = nullptr;
+    PetscInt nc = 0, n = 0;
+    PetscCall(DMPlexVecGetClosure(dm_, csec, coords, face.face, &nc, &xc));
+    PetscScalar *x = nullptr;
+    PetscCall(DMPlexVecGetClosure(dm_, s, local, face.face, &n, &x));
+    F.assign(n, 0.0);
+    const int nv = e.num_vertices, nu = nv * dim_;
+    const int np = (int)n - nu;
+    for (int q = 0; q < e.num_quadrature; ++q) {
+      const double w = faceWeight(e, xc, dim_, q);
+      const double *phi = &e.basis[q * nv];
+      for (int a = 0; a < nv; ++a) {
+        if (bc.kind == BcKind::traction)
+          for (int i = 0; i < dim_; ++i) F[a * dim_ + i] -= w * phi[a] * bc.value[i] * factor;
+        else if (bc.kind == BcKind::flux && np == nv)
+          F[nu + a] += mode.mass_scale * w * phi[a] * bc.value[0] * factor;
+      }
+    }
+    PetscCall(DMPlexVecRestoreClosure(dm_, s, local, face.face, &n, &x));
+    PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, face.face, &nc, &xc));
+    PetscCall(DMPlexVecSetClosure(dm_, s, f, face.face, F.data(), ADD_ALL_VALUES));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_rate,
+                                 double mass_scale, Mat J) const
+{
+  PetscSection s, gs, csec;
+  Vec coords;
+  PetscFunctionBeginUser;
+  PetscCall(MatZeroEntries(J));
+  PetscCall(DMGetLocalSection(dm_, &s));
+  PetscCall(DMGetGlobalSection(dm_, &gs));
+  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
+  PetscCall(DMGetCoordinateSection(dm_, &csec));
+  const bool pressure = scene_->hasPressure();
+  std::vector<double> F, K;
+  for (const auto &cell : cells_) {
+    const ReferenceElement &e = elements_[cell.element];
+    const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
+    PetscScalar *x = nullptr, *xdot = nullptr, *xc = nullptr;
+    PetscInt n = 0, nd = 0, nc = 0;
+    PetscCall(DMPlexVecGetClosure(dm_, s, local, cell.cell, &n, &x));
+    PetscCall(DMPlexVecGetClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
+    PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
+    F.assign(n, 0.0);
+    K.assign(n * n, 0.0);
+    CellKernel kernel{e, dim_, m, pressure && m.porous, mass_scale, {0, 0, 0}};
+    for (int d = 0; d < dim_; ++d) kernel.gravity[d] = gravityVector(d);
+    kernel(
+        xc, x, xdot, (int)n, [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
+        [&](const double *p) { return initialPressure(p); }, F.data(), shift, K.data());
+    PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell.cell, &nc, &xc));
+    PetscCall(DMPlexVecRestoreClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
+    PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &x));
+    PetscCall(DMPlexMatSetClosure(dm_, s, gs, J, cell.cell, K.data(), ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam

@@ -1,0 +1,412 @@
+#include "poroseam/scene.hpp"
+
+#include <petscsys.h>
+#include <algorithm>
+#include <cctype>
+#include <set>
+#include <sstream>
+
+namespace poroseam {
+namespace {
+
+constexpr size_t kMaxList = 64;
+
+PetscErrorCode getStringList(const std::string &option, std::vector<std::string> &out, bool *set)
+{
+  char *items[kMaxList];
+  PetscInt n = kMaxList;
+  PetscBool found = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetStringArray(nullptr, nullptr, option.c_str(), items, &n, &found));
+  out.clear();
+  for (PetscInt i = 0; i < n; ++i) {
+    out.emplace_back(items[i]);
+    PetscCall(PetscFree(items[i]));
+  }
+  *set = found;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode getReal(const std::string &option, double *value, bool *set)
+{
+  PetscBool found = PETSC_FALSE;
+  PetscReal v = 0.0;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, option.c_str(), &v, &found));
+  if (found) *value = v;
+  if (set) *set = found;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode getRequiredReal(MPI_Comm comm, const std::string &option, const std::string &what,
+                               double *value)
+{
+  bool set = false;
+  PetscFunctionBeginUser;
+  PetscCall(getReal(option, value, &set));
+  PetscCheck(set, comm, PETSC_ERR_USER_INPUT, "missing option %s: %s is required", option.c_str(),
+             what.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode getString(const std::string &option, std::string &value, bool *set)
+{
+  char buffer[PETSC_MAX_PATH_LEN];
+  PetscBool found = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, option.c_str(), buffer, sizeof(buffer), &found));
+  if (found) value = buffer;
+  if (set) *set = found;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode getRealList(const std::string &option, std::vector<double> &values, bool *set)
+{
+  PetscReal v[3];
+  PetscInt n = 3;
+  PetscBool found = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, option.c_str(), v, &n, &found));
+  values.assign(v, v + n);
+  *set = found;
+  PetscFunctionReturn(0);
+}
+
+std::string joinNames(const std::vector<PhysicalName> &names, int dim)
+{
+  std::string s;
+  for (const auto &n : names)
+    if (n.dim == dim) s += (s.empty() ? "" : ", ") + n.name;
+  return s.empty() ? "(none)" : s;
+}
+
+PetscErrorCode findPhysical(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
+                            const std::string &name, const char *option, const char *what, int *tag)
+{
+  PetscFunctionBeginUser;
+  for (const auto &n : names)
+    if (n.dim == dim && n.name == name) {
+      *tag = n.tag;
+      PetscFunctionReturn(0);
+    }
+  SETERRQ(comm, PETSC_ERR_USER_INPUT,
+          "%s: %s '%s' is not a physical group of dimension %d in the mesh; the mesh has: %s",
+          option, what, name.c_str(), dim, joinNames(names, dim).c_str());
+}
+
+PetscErrorCode readRegion(MPI_Comm comm, Region &r, bool gravity, bool drained)
+{
+  const std::string p = "-region_" + r.name + "_";
+  std::string material;
+  bool set = false;
+  PetscFunctionBeginUser;
+  PetscCall(getString(p + "material", material, &set));
+  PetscCheck(set, comm, PETSC_ERR_USER_INPUT, "missing option %smaterial: region '%s' needs "
+             "'elastic' or 'biot'", p.c_str(), r.name.c_str());
+  if (material == "elastic") r.model = MaterialModel::elastic;
+  else if (material == "biot") r.model = MaterialModel::biot;
+  else
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%smaterial %s: expected 'elastic' or 'biot'", p.c_str(),
+            material.c_str());
+
+  PetscCall(getRequiredReal(comm, p + "E", "Young's modulus [Pa] of region " + r.name, &r.young));
+  PetscCheck(r.young > 0.0, comm, PETSC_ERR_USER_INPUT, "%sE = %g: Young's modulus must be > 0",
+             p.c_str(), r.young);
+  PetscCall(getRequiredReal(comm, p + "nu", "Poisson's ratio of region " + r.name, &r.poisson));
+  PetscCheck(r.poisson > -1.0 && r.poisson < 0.5, comm, PETSC_ERR_USER_INPUT,
+             "%snu = %g: Poisson's ratio must lie in (-1, 0.5)", p.c_str(), r.poisson);
+  PetscCall(getReal(p + "rho_s", &r.solid_density, nullptr));
+  PetscCheck(r.solid_density >= 0.0, comm, PETSC_ERR_USER_INPUT,
+             "%srho_s = %g: density must be >= 0", p.c_str(), r.solid_density);
+  r.k0 = r.poisson / (1.0 - r.poisson);
+  PetscCall(getReal(p + "K0", &r.k0, nullptr));
+  PetscCheck(r.k0 >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sK0 = %g: must be >= 0", p.c_str(), r.k0);
+  if (r.porous()) {
+    PetscCall(getReal(p + "porosity", &r.porosity, nullptr));
+    PetscCheck(r.porosity >= 0.0 && r.porosity < 1.0, comm, PETSC_ERR_USER_INPUT,
+               "%sporosity = %g: must lie in [0, 1)", p.c_str(), r.porosity);
+    if (!drained) {
+      PetscCall(getRequiredReal(comm, p + "permeability",
+                                "intrinsic permeability [m2] of biot region " + r.name,
+                                &r.permeability));
+    } else {
+      PetscCall(getReal(p + "permeability", &r.permeability, nullptr));
+    }
+    PetscCheck(r.permeability >= 0.0, comm, PETSC_ERR_USER_INPUT,
+               "%spermeability = %g: must be >= 0", p.c_str(), r.permeability);
+    PetscCall(getReal(p + "biot_alpha", &r.biot_coefficient, nullptr));
+    PetscCheck(r.biot_coefficient > 0.0 && r.biot_coefficient <= 1.0, comm, PETSC_ERR_USER_INPUT,
+               "%sbiot_alpha = %g: must lie in (0, 1]", p.c_str(), r.biot_coefficient);
+    PetscCall(getReal(p + "storage", &r.storage, nullptr));
+    PetscCheck(r.storage >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sstorage = %g: 1/M must be >= 0",
+               p.c_str(), r.storage);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readTimeFunction(MPI_Comm comm, const std::string &option, TimeFunction &f)
+{
+  double ramp = 0.0;
+  bool ramp_set = false, table_set = false;
+  std::string table;
+  PetscFunctionBeginUser;
+  PetscCall(getReal(option + "_ramp", &ramp, &ramp_set));
+  PetscCall(getString(option + "_table", table, &table_set));
+  PetscCheck(!(ramp_set && table_set), comm, PETSC_ERR_USER_INPUT,
+             "%s: give either %s_ramp or %s_table, not both", option.c_str(), option.c_str(),
+             option.c_str());
+  if (ramp_set) {
+    PetscCheck(ramp > 0.0, comm, PETSC_ERR_USER_INPUT, "%s_ramp = %g: ramp time must be > 0",
+               option.c_str(), ramp);
+    f = TimeFunction::ramp(ramp);
+  } else if (table_set) {
+    std::vector<double> t, v;
+    const std::string err = readTimeTable(table, t, v);
+    PetscCheck(err.empty(), comm, PETSC_ERR_USER_INPUT, "%s_table: %s", option.c_str(), err.c_str());
+    f = TimeFunction::table(t, v);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b,
+                            std::vector<BoundaryCondition> &out)
+{
+  const std::string p = "-bc_" + b.name + "_";
+  const char *comps[3] = {"ux", "uy", "uz"};
+  PetscFunctionBeginUser;
+  auto add = [&](BoundaryCondition bc) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    bc.boundary = b.name;
+    bc.tag = b.tag;
+    PetscCall(readTimeFunction(comm, bc.option, bc.time));
+    out.push_back(bc);
+    PetscFunctionReturn(0);
+  };
+  for (int c = 0; c < 3; ++c) {
+    double v = 0.0;
+    bool set = false;
+    PetscCall(getReal(p + comps[c], &v, &set));
+    if (!set) continue;
+    PetscCheck(c < scene.dim, comm, PETSC_ERR_USER_INPUT,
+               "%s%s: the mesh is %dD, it has no %s component", p.c_str(), comps[c], scene.dim,
+               comps[c]);
+    BoundaryCondition bc;
+    bc.kind = BcKind::displacement;
+    bc.component = c;
+    bc.value = {v};
+    bc.option = p + comps[c];
+    PetscCall(add(bc));
+  }
+  {
+    double v = 0.0;
+    bool set = false;
+    PetscCall(getReal(p + "p", &v, &set));
+    if (set) {
+      PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
+                 "%sp: the scene has no pressure unknowns (drained, or no biot region)", p.c_str());
+      BoundaryCondition bc;
+      bc.kind = BcKind::pressure;
+      bc.value = {v};
+      bc.option = p + "p";
+      PetscCall(add(bc));
+    }
+  }
+  {
+    std::vector<double> v;
+    bool set = false;
+    PetscCall(getRealList(p + "traction", v, &set));
+    if (set) {
+      PetscCheck((int)v.size() == scene.dim, comm, PETSC_ERR_USER_INPUT,
+                 "%straction: expected %d comma-separated components, got %d", p.c_str(), scene.dim,
+                 (int)v.size());
+      BoundaryCondition bc;
+      bc.kind = BcKind::traction;
+      bc.value = v;
+      bc.option = p + "traction";
+      PetscCall(add(bc));
+    }
+  }
+  {
+    double v = 0.0;
+    bool set = false;
+    PetscCall(getReal(p + "flux", &v, &set));
+    if (set) {
+      PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
+                 "%sflux: the scene has no pressure unknowns (drained, or no biot region)",
+                 p.c_str());
+      BoundaryCondition bc;
+      bc.kind = BcKind::flux;
+      bc.value = {v};
+      bc.option = p + "flux";
+      PetscCall(add(bc));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/// Names used in options of the form -<prefix><name>_..., for spotting typos.
+std::set<std::string> optionsWithPrefix(const std::string &all, const std::string &prefix)
+{
+  std::set<std::string> found;
+  std::istringstream in(all);
+  std::string token;
+  while (in >> token)
+    if (token.rfind("-" + prefix, 0) == 0) found.insert(token.substr(1));
+  return found;
+}
+
+PetscErrorCode checkOptionNames(MPI_Comm comm, const Scene &scene)
+{
+  char *all = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetAll(nullptr, &all));
+  const std::string text = all;
+  PetscCall(PetscFree(all));
+  for (const auto &opt : optionsWithPrefix(text, "region_")) {
+    bool known = false;
+    for (const auto &r : scene.regions)
+      known = known || opt.rfind("region_" + r.name + "_", 0) == 0;
+    PetscCheck(known, comm, PETSC_ERR_USER_INPUT,
+               "option -%s names a region that is not in -regions", opt.c_str());
+  }
+  for (const auto &opt : optionsWithPrefix(text, "bc_")) {
+    bool known = false;
+    for (const auto &b : scene.boundaries) known = known || opt.rfind("bc_" + b.name + "_", 0) == 0;
+    PetscCheck(known, comm, PETSC_ERR_USER_INPUT,
+               "option -%s names a boundary that is not in -boundaries", opt.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readProbes(MPI_Comm comm, Scene &scene)
+{
+  char *all = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetAll(nullptr, &all));
+  const std::string text = all;
+  PetscCall(PetscFree(all));
+  for (const auto &opt : optionsWithPrefix(text, "probe_")) {
+    Probe probe;
+    probe.name = opt.substr(6);
+    std::vector<double> x;
+    bool set = false;
+    PetscCall(getRealList("-" + opt, x, &set));
+    PetscCheck((int)x.size() == scene.dim, comm, PETSC_ERR_USER_INPUT,
+               "-%s: expected %d comma-separated coordinates, got %d", opt.c_str(), scene.dim,
+               (int)x.size());
+    for (int d = 0; d < scene.dim; ++d) probe.x[d] = x[d];
+    scene.probes.push_back(probe);
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+bool Scene::hasPressure() const
+{
+  if (drained) return false;
+  return std::any_of(regions.begin(), regions.end(), [](const Region &r) { return r.porous(); });
+}
+
+int Scene::regionIndexOfTag(int tag) const
+{
+  for (size_t i = 0; i < regions.size(); ++i)
+    if (regions[i].tag == tag) return (int)i;
+  return -1;
+}
+
+PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
+{
+  bool set = false;
+  PetscFunctionBeginUser;
+  PetscCall(getString("-mesh", scene.mesh_file, &set));
+  PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
+             "missing option -mesh: name a Gmsh mesh (.msh) or geometry (.geo) file");
+  PetscCall(getReal("-mesh_size_factor", &scene.mesh_size_factor, nullptr));
+  PetscCheck(scene.mesh_size_factor > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_size_factor %g: must be > 0", scene.mesh_size_factor);
+  PetscCall(getString("-output_dir", scene.output_dir, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
+                                Scene &scene)
+{
+  bool set = false;
+  PetscFunctionBeginUser;
+  scene.dim = dim;
+  PetscBool flag = PETSC_FALSE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-drained", &flag, nullptr));
+  scene.drained = flag;
+  PetscCall(getReal("-gravity", &scene.gravity, nullptr));
+  PetscCheck(scene.gravity >= 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-gravity %g: give the magnitude g >= 0 (it acts along -y in 2D, -z in 3D)",
+             scene.gravity);
+  PetscCall(getReal("-fluid_density", &scene.fluid_density, nullptr));
+  PetscCall(getReal("-fluid_viscosity", &scene.fluid_viscosity, nullptr));
+  PetscCheck(scene.fluid_density > 0.0, comm, PETSC_ERR_USER_INPUT, "-fluid_density %g: must be > 0",
+             scene.fluid_density);
+  PetscCheck(scene.fluid_viscosity > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-fluid_viscosity %g: must be > 0", scene.fluid_viscosity);
+  PetscCall(getReal("-stabilization_factor", &scene.stabilization_factor, nullptr));
+  PetscCheck(scene.stabilization_factor >= 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-stabilization_factor %g: must be >= 0", scene.stabilization_factor);
+
+  std::string initial = "none";
+  PetscCall(getString("-initial_state", initial, nullptr));
+  PetscCheck(initial == "none" || initial == "geostatic", comm, PETSC_ERR_USER_INPUT,
+             "-initial_state %s: expected 'none' or 'geostatic'", initial.c_str());
+  scene.geostatic = initial == "geostatic";
+  PetscCheck(!scene.geostatic || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-initial_state geostatic needs -gravity > 0");
+  PetscCall(getReal("-surface_elevation", &scene.surface_elevation, nullptr));
+  scene.water_level = scene.surface_elevation;
+  PetscCall(getReal("-water_level", &scene.water_level, nullptr));
+
+  // Regions: every one must be a cell group of the mesh and have a material.
+  std::vector<std::string> list;
+  PetscCall(getStringList("-regions", list, &set));
+  PetscCheck(set && !list.empty(), comm, PETSC_ERR_USER_INPUT,
+             "missing option -regions: list the mesh regions (cell physical names: %s)",
+             joinNames(names, dim).c_str());
+  scene.regions.clear();
+  for (const auto &name : list) {
+    Region r;
+    r.name = name;
+    PetscCall(findPhysical(comm, names, dim, name, "-regions", "region", &r.tag));
+    scene.regions.push_back(r);
+  }
+  for (auto &r : scene.regions) PetscCall(readRegion(comm, r, scene.gravity > 0.0, scene.drained));
+
+  PetscCall(getStringList("-boundaries", list, &set));
+  scene.boundaries.clear();
+  for (const auto &name : list) {
+    Boundary b;
+    b.name = name;
+    PetscCall(findPhysical(comm, names, dim - 1, name, "-boundaries", "boundary", &b.tag));
+    scene.boundaries.push_back(b);
+  }
+  scene.conditions.clear();
+  for (const auto &b : scene.boundaries) PetscCall(readBoundary(comm, scene, b, scene.conditions));
+  PetscCall(checkOptionNames(comm, scene));
+
+  PetscInt every = scene.output_every;
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-output_fields_every", &every, nullptr));
+  PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT, "-output_fields_every %d: must be >= 0",
+             (int)every);
+  scene.output_every = (int)every;
+  scene.probes.clear();
+  PetscCall(readProbes(comm, scene));
+  PetscFunctionReturn(0);
+}
+
+void printSceneHelp(MPI_Comm comm)
+{
+  // Generated at configure time from docs/scenes.md, so -help and the docs never differ.
+  static const char *text =
+#include "scene_help.inc"
+      ;
+  PetscPrintf(comm, "%s\n", text);
+}
+
+} // namespace poroseam

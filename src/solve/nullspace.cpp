@@ -1,0 +1,105 @@
+#include "poroseam/nullspace.hpp"
+
+#include "poroseam/layout.hpp"
+
+#include <petscdmplex.h>
+#include <vector>
+
+namespace poroseam {
+namespace {
+
+/// Rigid-body modes restricted to the free displacement dofs, orthonormalised. Built by hand
+/// because MatNullSpaceCreateRigidBody needs whole blocks and constraints remove dofs.
+PetscErrorCode rigidBodyModes(DM dm, int dim, IS displacement, MatNullSpace *space)
+{
+  PetscSection s, csec;
+  Vec coords, local, global;
+  PetscInt vStart, vEnd;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(dm, &s));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  const int count = dim == 2 ? 3 : 6;
+  std::vector<Vec> modes(count);
+  PetscCall(DMGetLocalVector(dm, &local));
+  PetscCall(DMGetGlobalVector(dm, &global));
+  const PetscScalar *x;
+  PetscCall(VecGetArrayRead(coords, &x));
+  for (int m = 0; m < count; ++m) {
+    PetscScalar *u;
+    PetscCall(VecSet(local, 0.0));
+    PetscCall(VecGetArray(local, &u));
+    for (PetscInt v = vStart; v < vEnd; ++v) {
+      PetscInt off, coff;
+      PetscCall(PetscSectionGetFieldOffset(s, v, kDisplacementField, &off));
+      PetscCall(PetscSectionGetOffset(csec, v, &coff));
+      const double *p = &x[coff];
+      double mode[3] = {0, 0, 0};
+      if (m < dim) mode[m] = 1.0;
+      else if (dim == 2) mode[0] = -p[1], mode[1] = p[0];
+      else if (m == 3) mode[0] = -p[1], mode[1] = p[0];
+      else if (m == 4) mode[1] = -p[2], mode[2] = p[1];
+      else mode[0] = p[2], mode[2] = -p[0];
+      for (int d = 0; d < dim; ++d) u[off + d] = mode[d];
+    }
+    PetscCall(VecRestoreArray(local, &u));
+    PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, global));
+    Vec sub;
+    PetscCall(VecGetSubVector(global, displacement, &sub));
+    PetscCall(VecDuplicate(sub, &modes[m]));
+    PetscCall(VecCopy(sub, modes[m]));
+    PetscCall(VecRestoreSubVector(global, displacement, &sub));
+  }
+  PetscCall(VecRestoreArrayRead(coords, &x));
+  PetscCall(DMRestoreGlobalVector(dm, &global));
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  // Modified Gram-Schmidt.
+  for (int m = 0; m < count; ++m) {
+    for (int k = 0; k < m; ++k) {
+      PetscScalar dot;
+      PetscCall(VecDot(modes[m], modes[k], &dot));
+      PetscCall(VecAXPY(modes[m], -dot, modes[k]));
+    }
+    PetscCall(VecNormalize(modes[m], nullptr));
+  }
+  PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)dm), PETSC_FALSE, count, modes.data(),
+                               space));
+  for (auto &v : modes) PetscCall(VecDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
+{
+  SNES snes;
+  KSP ksp;
+  PC pc;
+  PetscBool fieldsplit;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fieldsplit));
+  if (!fieldsplit) PetscFunctionReturn(0);
+  PetscInt numFields;
+  char **names;
+  IS *fields;
+  PetscCall(DMCreateFieldIS(dm, &numFields, &names, &fields));
+  MatNullSpace modes;
+  PetscCall(rigidBodyModes(dm, scene.dim, fields[kDisplacementField], &modes));
+  PetscCall(PetscObjectCompose((PetscObject)fields[kDisplacementField], "nearnullspace",
+                               (PetscObject)modes));
+  PetscCall(MatNullSpaceDestroy(&modes));
+  for (PetscInt f = 0; f < numFields; ++f) {
+    PetscCall(PCFieldSplitSetIS(pc, names[f], fields[f]));
+    PetscCall(PetscFree(names[f]));
+    PetscCall(ISDestroy(&fields[f]));
+  }
+  PetscCall(PetscFree(names));
+  PetscCall(PetscFree(fields));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam

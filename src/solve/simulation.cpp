@@ -1,0 +1,406 @@
+#include "poroseam/simulation.hpp"
+
+#include "poroseam/field_writer.hpp"
+#include "poroseam/layout.hpp"
+#include "poroseam/mesh.hpp"
+#include "poroseam/nullspace.hpp"
+#include "poroseam/probes.hpp"
+#include "poroseam/problem.hpp"
+#include "poroseam/scene.hpp"
+
+#include <petscts.h>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace poroseam {
+namespace {
+
+/// Per-boundary offsets of the local vector entries summed into force and flux resultants.
+struct BoundaryDofs {
+  std::vector<PetscInt> displacement; ///< first displacement dof of each vertex
+  std::vector<PetscInt> pressure;     ///< pressure dof of each vertex that has one
+};
+
+struct Run {
+  Scene scene;
+  DM dm = nullptr;
+  Problem problem;
+  Probes probes;
+  FieldWriter fields;
+  TS ts = nullptr;
+  Vec previous = nullptr; ///< local state of the last accepted step (boundary values included)
+  Vec initial = nullptr;  ///< local initial state
+  std::vector<BoundaryDofs> boundary_dofs;
+  FILE *csv = nullptr;
+  double nominal_dt = 0.0;
+  double fail_dt_above = 0.0; ///< test hook: step attempts with a larger dt fail
+  PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
+  double step_start = 0.0;
+  int step = 0;
+  double residual_scale = 0.0;            ///< largest initial Newton residual of the run
+  double reference_rtol = 1e-11;          ///< -snes_reference_rtol
+};
+
+PetscErrorCode currentDt(Run &run, double *dt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TSGetTimeStep(run.ts, dt));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode boundaryLocal(DM, PetscReal t, Vec local, Vec local_rate, void *ctx)
+{
+  Run &run = *static_cast<Run *>(ctx);
+  double dt;
+  PetscFunctionBeginUser;
+  PetscCall(currentDt(run, &dt));
+  PetscCall(run.problem.insertBoundaryValues(t, dt, run.previous, local, local_rate));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f, void *ctx)
+{
+  Run &run = *static_cast<Run *>(ctx);
+  double dt;
+  PetscFunctionBeginUser;
+  PetscCall(currentDt(run, &dt));
+  if (run.fail_dt_above > 0.0 && dt > run.fail_dt_above) {
+    // Test hook standing in for a step too large to converge (see -test_fail_dt_above).
+    SNES snes;
+    PetscCall(TSGetSNES(run.ts, &snes));
+    PetscCall(SNESSetFunctionDomainError(snes));
+  }
+  PetscCall(run.problem.residual(t, local, local_rate, ResidualMode{-dt, true}, f));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscReal shift, Mat J,
+                              Mat P, void *ctx)
+{
+  Run &run = *static_cast<Run *>(ctx);
+  double dt;
+  PetscFunctionBeginUser;
+  PetscCall(currentDt(run, &dt));
+  PetscCall(run.problem.jacobian(t, shift, local, local_rate, -dt, P));
+  if (J != P) {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
+  PetscFunctionReturn(0);
+}
+
+/// PETSc's default test, plus: converged when the residual is below reference_rtol times the
+/// largest initial residual of the run. A step that starts close to equilibrium (slow
+/// consolidation, small increments) cannot reach rtol relative to its own tiny initial
+/// residual: round-off of the force rows stops it first.
+PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                               PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+{
+  Run &run = *static_cast<Run *>(ctx);
+  PetscFunctionBeginUser;
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  const double scale = run.residual_scale;
+  if (it == 0) run.residual_scale = std::max(run.residual_scale, (double)fnorm);
+  if (*reason == SNES_CONVERGED_ITERATING && scale > 0.0 && fnorm <= run.reference_rtol * scale)
+    *reason = SNES_CONVERGED_FNORM_ABS;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode collectBoundaryDofs(Run &run)
+{
+  PetscSection s;
+  PetscInt numFields, vStart, vEnd;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(run.dm, &s));
+  PetscCall(PetscSectionGetNumFields(s, &numFields));
+  PetscCall(DMPlexGetDepthStratum(run.dm, 0, &vStart, &vEnd));
+  run.boundary_dofs.assign(run.scene.boundaries.size(), BoundaryDofs());
+  for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
+    DMLabel label;
+    PetscCall(DMGetLabel(run.dm, boundaryLabelName(run.scene.boundaries[b].name).c_str(), &label));
+    IS points = nullptr;
+    PetscCall(DMLabelGetStratumIS(label, 1, &points));
+    if (!points) continue;
+    const PetscInt *idx;
+    PetscInt n;
+    PetscCall(ISGetLocalSize(points, &n));
+    PetscCall(ISGetIndices(points, &idx));
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscInt v = idx[i];
+      if (v < vStart || v >= vEnd) continue;
+      PetscInt off, dof = 0;
+      PetscCall(PetscSectionGetFieldOffset(s, v, kDisplacementField, &off));
+      run.boundary_dofs[b].displacement.push_back(off);
+      if (numFields > kPressureField) PetscCall(PetscSectionGetFieldDof(s, v, kPressureField, &dof));
+      if (dof) {
+        PetscCall(PetscSectionGetFieldOffset(s, v, kPressureField, &off));
+        run.boundary_dofs[b].pressure.push_back(off);
+      }
+    }
+    PetscCall(ISRestoreIndices(points, &idx));
+    PetscCall(ISDestroy(&points));
+  }
+  PetscFunctionReturn(0);
+}
+
+/// Forces [N] and outflows [m3/s] through every boundary, from the residual without loads.
+PetscErrorCode boundaryResultants(Run &run, double t, Vec local, Vec rate, std::vector<double> &out)
+{
+  const int dim = run.scene.dim, per = dim + 1;
+  Vec f;
+  const PetscScalar *r;
+  MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(run.dm, &f));
+  PetscCall(run.problem.residual(t, local, rate, ResidualMode{1.0, false}, f));
+  PetscCall(VecGetArrayRead(f, &r));
+  std::vector<double> mine(run.boundary_dofs.size() * per, 0.0);
+  for (size_t b = 0; b < run.boundary_dofs.size(); ++b) {
+    // Each rank holds only its own cells' contributions, so the sum over ranks counts each once.
+    for (PetscInt off : run.boundary_dofs[b].displacement)
+      for (int d = 0; d < dim; ++d) mine[b * per + d] += r[off + d];
+    for (PetscInt off : run.boundary_dofs[b].pressure) mine[b * per + dim] -= r[off];
+  }
+  PetscCall(VecRestoreArrayRead(f, &r));
+  PetscCall(DMRestoreLocalVector(run.dm, &f));
+  out.assign(mine.size(), 0.0);
+  PetscCallMPI(MPI_Allreduce(mine.data(), out.data(), (int)mine.size(), MPI_DOUBLE, MPI_SUM, comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode openTimeSeries(Run &run)
+{
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)run.dm), &rank));
+  if (rank) PetscFunctionReturn(0);
+  const std::string path = run.scene.output_dir + "/timeseries.csv";
+  run.csv = std::fopen(path.c_str(), "w");
+  PetscCheck(run.csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s (option -output_dir)",
+             path.c_str());
+  const char *axis[3] = {"x", "y", "z"};
+  std::fprintf(run.csv, "step,time,dt,load,newton_its,ksp_its,rejected,wall_time");
+  for (const auto &b : run.scene.boundaries) {
+    for (int d = 0; d < run.scene.dim; ++d) std::fprintf(run.csv, ",%s.F%s", b.name.c_str(), axis[d]);
+    if (run.scene.hasPressure()) std::fprintf(run.csv, ",%s.flux", b.name.c_str());
+  }
+  for (const auto &p : run.scene.probes) {
+    for (int d = 0; d < run.scene.dim; ++d) std::fprintf(run.csv, ",%s.u%s", p.name.c_str(), axis[d]);
+    std::fprintf(run.csv, ",%s.p", p.name.c_str());
+  }
+  std::fprintf(run.csv, "\n");
+  PetscFunctionReturn(0);
+}
+
+/// One row of timeseries.csv and, every output_every steps, the fields.
+PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
+                          PetscInt ksp, PetscInt rejected, double wall)
+{
+  std::vector<double> resultants, probes;
+  PetscFunctionBeginUser;
+  PetscCall(boundaryResultants(run, t, local, rate, resultants));
+  PetscCall(run.probes.evaluate(local, probes));
+  if (run.csv) {
+    const int dim = run.scene.dim;
+    std::fprintf(run.csv, "%d,%.10e,%.10e,%.6g,%d,%d,%d,%.4e", run.step, t, dt,
+                 run.problem.loadFactor(t), (int)newton, (int)ksp, (int)rejected, wall);
+    for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
+      for (int d = 0; d < dim; ++d) std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + d]);
+      if (run.scene.hasPressure()) std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + dim]);
+    }
+    for (double v : probes) std::fprintf(run.csv, ",%.12e", v);
+    std::fprintf(run.csv, "\n");
+    std::fflush(run.csv);
+  }
+  if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0)
+    PetscCall(run.fields.write(t, local, run.initial));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode postStep(TS ts)
+{
+  void *ctx;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetApplicationContext(ts, &ctx));
+  Run &run = *static_cast<Run *>(ctx);
+  ++run.step;
+  double t, t_previous;
+  PetscCall(TSGetTime(ts, &t));
+  PetscCall(TSGetPrevTime(ts, &t_previous));
+  const double dt = t - t_previous; // the step just taken (after any cut-back)
+  Vec X, local, rate;
+  PetscCall(TSGetSolution(ts, &X));
+  PetscCall(DMGetLocalVector(run.dm, &local));
+  PetscCall(DMGetLocalVector(run.dm, &rate));
+  PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, local));
+  PetscCall(run.problem.insertBoundaryValues(t, dt, run.previous, local, nullptr));
+  PetscCall(VecWAXPY(rate, -1.0, run.previous, local));
+  PetscCall(VecScale(rate, 1.0 / dt));
+
+  PetscInt snes_its, ksp_its, rejects;
+  PetscCall(TSGetSNESIterations(ts, &snes_its));
+  PetscCall(TSGetKSPIterations(ts, &ksp_its));
+  PetscCall(TSGetStepRejections(ts, &rejects));
+  const PetscInt newton = snes_its - run.last_snes_its, krylov = ksp_its - run.last_ksp_its;
+  const PetscInt rejected = rejects - run.last_rejects;
+  run.last_snes_its = snes_its, run.last_ksp_its = ksp_its, run.last_rejects = rejects;
+  const double wall = MPI_Wtime() - run.step_start;
+  PetscCall(recordStep(run, t, dt, local, rate, newton, krylov, rejected, wall));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)ts),
+                        "step %4d  t %11.5e s  dt %10.4e  load %6.4f  newton %2d  krylov %4d%s  "
+                        "%.2f s\n",
+                        run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)krylov,
+                        rejected ? "  (cut back)" : "", wall));
+  PetscCall(VecCopy(local, run.previous));
+  PetscCall(DMRestoreLocalVector(run.dm, &rate));
+  PetscCall(DMRestoreLocalVector(run.dm, &local));
+  // After a cut-back the step grows again, by 2 per accepted step, up to the nominal size.
+  if (dt < run.nominal_dt) PetscCall(TSSetTimeStep(ts, std::min(run.nominal_dt, 2.0 * dt)));
+  run.step_start = MPI_Wtime();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode printFieldSizes(Run &run)
+{
+  PetscSection gs;
+  PetscInt pStart, pEnd, numFields;
+  MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalSection(run.dm, &gs));
+  PetscCall(PetscSectionGetChart(gs, &pStart, &pEnd));
+  PetscCall(PetscSectionGetNumFields(gs, &numFields));
+  std::vector<long> local(numFields, 0), total(numFields, 0);
+  for (PetscInt p = pStart; p < pEnd; ++p)
+    for (PetscInt f = 0; f < numFields; ++f) {
+      PetscInt dof, cdof, off;
+      PetscCall(PetscSectionGetOffset(gs, p, &off));
+      if (off < 0) continue; // not owned
+      PetscCall(PetscSectionGetFieldDof(gs, p, f, &dof));
+      PetscCall(PetscSectionGetFieldConstraintDof(gs, p, f, &cdof));
+      local[f] += dof - cdof;
+    }
+  PetscCallMPI(MPI_Allreduce(local.data(), total.data(), numFields, MPI_LONG, MPI_SUM, comm));
+  PetscSection s;
+  PetscCall(DMGetLocalSection(run.dm, &s));
+  for (PetscInt f = 0; f < numFields; ++f) {
+    const char *name;
+    PetscCall(PetscSectionGetFieldName(s, f, &name));
+    PetscCall(PetscPrintf(comm, "field %-14s %10ld unknowns\n", name, total[f]));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode reportUnusedOptions(MPI_Comm comm)
+{
+  PetscInt n;
+  char **names, **values;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
+  for (PetscInt i = 0; i < n; ++i)
+    PetscCall(PetscPrintf(comm, "poroseam: warning: option -%s%s%s was given but never used\n",
+                          names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
+  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode runSimulation(MPI_Comm comm)
+{
+  Run run;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(readMeshOptions(comm, run.scene));
+  if (rank == 0) {
+    const std::string cmd = "mkdir -p '" + run.scene.output_dir + "'";
+    PetscCheck(std::system(cmd.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
+               "cannot create the output directory '%s' (option -output_dir)",
+               run.scene.output_dir.c_str());
+  }
+  std::vector<PhysicalName> names;
+  int dim;
+  PetscCall(loadGmshMesh(comm, run.scene.mesh_file, run.scene.mesh_size_factor,
+                         run.scene.output_dir + "/mesh", &run.dm, &names, &dim));
+  PetscCall(readSceneOptions(comm, names, dim, run.scene));
+  PetscCall(markLayoutLabels(run.dm, run.scene));
+  PetscCall(distributeMesh(&run.dm));
+  PetscCall(checkCellOrientation(run.dm));
+  PetscCall(createSolutionSection(run.dm, run.scene));
+  PetscCall(run.problem.setup(run.dm, run.scene));
+  PetscCall(run.probes.setup(run.dm, run.scene));
+  PetscCall(collectBoundaryDofs(run));
+  PetscCall(printFieldSizes(run));
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-test_fail_dt_above", &run.fail_dt_above, nullptr));
+
+  // Initial state and its boundary values.
+  PetscCall(DMCreateLocalVector(run.dm, &run.previous));
+  PetscCall(VecDuplicate(run.previous, &run.initial));
+  PetscCall(run.problem.initialState(run.initial));
+  PetscCall(VecCopy(run.initial, run.previous));
+  Vec X;
+  PetscCall(DMCreateGlobalVector(run.dm, &X));
+  PetscCall(PetscObjectSetName((PetscObject)X, "solution"));
+  PetscCall(DMLocalToGlobal(run.dm, run.initial, INSERT_VALUES, X));
+
+  PetscCall(TSCreate(comm, &run.ts));
+  PetscCall(TSSetDM(run.ts, run.dm));
+  PetscCall(TSSetApplicationContext(run.ts, &run));
+  PetscCall(TSSetType(run.ts, TSBEULER));
+  PetscCall(TSSetProblemType(run.ts, TS_NONLINEAR));
+  PetscCall(DMTSSetBoundaryLocal(run.dm, boundaryLocal, &run));
+  PetscCall(DMTSSetIFunctionLocal(run.dm, iFunctionLocal, &run));
+  PetscCall(DMTSSetIJacobianLocal(run.dm, iJacobianLocal, &run));
+  PetscCall(TSSetTimeStep(run.ts, 1.0));
+  PetscCall(TSSetMaxTime(run.ts, 1.0));
+  PetscCall(TSSetExactFinalTime(run.ts, TS_EXACTFINALTIME_MATCHSTEP));
+  PetscCall(TSSetMaxSNESFailures(run.ts, -1)); // failures are bounded per step by -ts_max_reject
+  PetscCall(TSSetMaxStepRejections(run.ts, 8));
+  TSAdapt adapt;
+  PetscCall(TSGetAdapt(run.ts, &adapt));
+  PetscCall(TSAdaptSetScaleSolveFailed(adapt, 0.5));
+  PetscCall(TSSetPostStep(run.ts, postStep));
+  SNES snes;
+  PetscCall(TSGetSNES(run.ts, &snes));
+  PetscCall(SNESSetType(snes, SNESNEWTONLS));
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-snes_reference_rtol", &run.reference_rtol, nullptr));
+  PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
+  PetscCall(TSSetFromOptions(run.ts));
+  PetscCall(configureFieldSplit(run.ts, run.dm, run.scene));
+  TSType type;
+  PetscCall(TSGetType(run.ts, &type));
+  PetscCheck(std::string(type) == TSBEULER, comm, PETSC_ERR_USER_INPUT,
+             "-ts_type %s: poroseam integrates in time with backward Euler (beuler) only", type);
+  PetscCall(TSGetTimeStep(run.ts, &run.nominal_dt));
+  PetscCheck(run.nominal_dt > 0.0, comm, PETSC_ERR_USER_INPUT, "-ts_dt %g: must be > 0",
+             run.nominal_dt);
+
+  PetscCall(openTimeSeries(run));
+  if (run.scene.output_every > 0) PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields"));
+  {
+    // Row 0: the initial state.
+    Vec rate;
+    PetscCall(DMGetLocalVector(run.dm, &rate));
+    PetscCall(VecSet(rate, 0.0));
+    PetscCall(recordStep(run, 0.0, 0.0, run.initial, rate, 0, 0, 0, 0.0));
+    PetscCall(DMRestoreLocalVector(run.dm, &rate));
+  }
+  run.step_start = MPI_Wtime();
+  const double t0 = MPI_Wtime();
+  PetscCall(TSSolve(run.ts, X));
+  PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
+                        MPI_Wtime() - t0, run.scene.output_dir.c_str()));
+  if (run.csv) std::fclose(run.csv);
+  PetscCall(run.fields.close());
+  PetscCall(VecDestroy(&X));
+  PetscCall(VecDestroy(&run.previous));
+  PetscCall(VecDestroy(&run.initial));
+  PetscCall(TSDestroy(&run.ts));
+  PetscCall(DMDestroy(&run.dm));
+  PetscCall(reportUnusedOptions(comm));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam
