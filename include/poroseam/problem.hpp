@@ -5,8 +5,8 @@
 
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
-#include <petscdmplex.h>
 #include <map>
+#include <petscdmplex.h>
 #include <vector>
 
 namespace poroseam {

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "poroseam/time_function.hpp"
-#include <petscsys.h>
 #include <array>
+#include <petscsys.h>
 #include <string>
 #include <vector>
 
@@ -24,14 +24,14 @@ struct Region {
   std::string name;
   int tag = 0; ///< value in the "Cell Sets" label
   MaterialModel model = MaterialModel::elastic;
-  double young = 0.0;           ///< E [Pa]
-  double poisson = 0.0;         ///< nu [-]
-  double solid_density = 0.0;   ///< rho_s [kg/m3]
-  double porosity = 0.0;        ///< n [-] (biot)
-  double permeability = 0.0;    ///< intrinsic k [m2] (biot)
+  double young = 0.0;            ///< E [Pa]
+  double poisson = 0.0;          ///< nu [-]
+  double solid_density = 0.0;    ///< rho_s [kg/m3]
+  double porosity = 0.0;         ///< n [-] (biot)
+  double permeability = 0.0;     ///< intrinsic k [m2] (biot)
   double biot_coefficient = 1.0; ///< alpha [-] (biot)
-  double storage = 0.0;         ///< 1/M [1/Pa] (biot)
-  double k0 = 1.0;              ///< earth pressure coefficient at rest (geostatic state)
+  double storage = 0.0;          ///< 1/M [1/Pa] (biot)
+  double k0 = 1.0;               ///< earth pressure coefficient at rest (geostatic state)
   bool porous() const { return model == MaterialModel::biot; }
 };
 
@@ -41,10 +41,10 @@ struct BoundaryCondition {
   std::string boundary; ///< Gmsh physical name
   int tag = 0;          ///< value in the "Face Sets" label
   BcKind kind = BcKind::displacement;
-  int component = 0;          ///< displacement component (0 = x) for kind displacement
-  std::vector<double> value;  ///< magnitude: 1 entry, or dim entries for a traction
+  int component = 0;         ///< displacement component (0 = x) for kind displacement
+  std::vector<double> value; ///< magnitude: 1 entry, or dim entries for a traction
   TimeFunction time = TimeFunction::step();
-  std::string option;         ///< the option that defined it, for messages
+  std::string option; ///< the option that defined it, for messages
   bool dirichlet() const { return kind == BcKind::displacement || kind == BcKind::pressure; }
 };
 

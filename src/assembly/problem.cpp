@@ -5,8 +5,8 @@
 #include "poroseam/elastic.hpp"
 #include "poroseam/layout.hpp"
 
-#include <petscsf.h>
 #include <cmath>
+#include <petscsf.h>
 #include <sstream>
 
 namespace poroseam {
@@ -19,12 +19,16 @@ double faceWeight(const ReferenceElement &e, const double *coords, int space, in
   double t[2][3] = {{0, 0, 0}, {0, 0, 0}};
   for (int k = 0; k < e.dim; ++k)
     for (int a = 0; a < e.num_vertices; ++a)
-      for (int r = 0; r < space; ++r) t[k][r] += coords[a * space + r] * dphi[a * e.dim + k];
+      for (int r = 0; r < space; ++r)
+        t[k][r] += coords[a * space + r] * dphi[a * e.dim + k];
   double measure;
-  if (e.dim == 0) measure = 1.0;
-  else if (e.dim == 1) measure = std::sqrt(t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2]);
+  if (e.dim == 0)
+    measure = 1.0;
+  else if (e.dim == 1)
+    measure = std::sqrt(t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2]);
   else {
-    const double n[3] = {t[0][1] * t[1][2] - t[0][2] * t[1][1], t[0][2] * t[1][0] - t[0][0] * t[1][2],
+    const double n[3] = {t[0][1] * t[1][2] - t[0][2] * t[1][1],
+                         t[0][2] * t[1][0] - t[0][0] * t[1][2],
                          t[0][0] * t[1][1] - t[0][1] * t[1][0]};
     measure = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   }
@@ -40,9 +44,9 @@ double cellSize(const ReferenceElement &e, double volume)
 }
 
 struct Closure {
-  int nv = 0;      // vertices
-  int np = 0;      // vertices with a pressure dof
-  int size = 0;    // nv * dim + np
+  int nv = 0;   // vertices
+  int np = 0;   // vertices with a pressure dof
+  int size = 0; // nv * dim + np
 };
 
 } // namespace
@@ -61,7 +65,10 @@ PetscErrorCode Problem::elementIndex(DMPolytopeType type, int *index)
   PetscFunctionReturn(0);
 }
 
-double Problem::gravityVector(int d) const { return d == dim_ - 1 ? -scene_->gravity : 0.0; }
+double Problem::gravityVector(int d) const
+{
+  return d == dim_ - 1 ? -scene_->gravity : 0.0;
+}
 
 double Problem::initialPressure(const double x[]) const
 {
@@ -72,7 +79,8 @@ double Problem::initialPressure(const double x[]) const
 void Problem::initialStress(const double x[], int region, double stress[3][3]) const
 {
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) stress[i][j] = 0.0;
+    for (int j = 0; j < 3; ++j)
+      stress[i][j] = 0.0;
   const Region &r = scene_->regions[region];
   if (!scene_->geostatic || !r.porous()) return;
   // K0 state: sigma'_v = -gamma' depth below the surface, sigma'_h = K0 sigma'_v.
@@ -81,7 +89,8 @@ void Problem::initialStress(const double x[], int region, double stress[3][3]) c
   const double buoyant = (rho_sat - scene_->fluid_density) * scene_->gravity;
   const double depth = std::max(0.0, scene_->surface_elevation - x[dim_ - 1]);
   const double vertical = -buoyant * depth;
-  for (int i = 0; i < 3; ++i) stress[i][i] = r.k0 * vertical;
+  for (int i = 0; i < 3; ++i)
+    stress[i][i] = r.k0 * vertical;
   stress[dim_ - 1][dim_ - 1] = vertical;
 }
 
@@ -355,10 +364,12 @@ struct CellKernel {
             }
           if (!with_pressure) continue;
           double grad_grad = 0.0;
-          for (int d = 0; d < dim; ++d) grad_grad += dphi[a * dim + d] * dphi[b * dim + d];
+          for (int d = 0; d < dim; ++d)
+            grad_grad += dphi[a * dim + d] * dphi[b * dim + d];
           for (int i = 0; i < dim; ++i) {
             J[(a * dim + i) * S + nu + b] += -w * alpha * dphi[a * dim + i] * phi[b];
-            J[(nu + a) * S + b * dim + i] += mass_scale * w * shift * alpha * phi[a] * dphi[b * dim + i];
+            J[(nu + a) * S + b * dim + i] +=
+                mass_scale * w * shift * alpha * phi[a] * dphi[b * dim + i];
           }
           J[(nu + a) * S + nu + b] +=
               mass_scale * w *
@@ -412,9 +423,11 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
     PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
     F.assign(n, 0.0);
     CellKernel kernel{e, dim_, m, pressure && m.porous, mode.mass_scale, {0, 0, 0}};
-    for (int d = 0; d < dim_; ++d) kernel.gravity[d] = gravityVector(d);
+    for (int d = 0; d < dim_; ++d)
+      kernel.gravity[d] = gravityVector(d);
     kernel(
-        xc, x, xdot, (int)n, [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
+        xc, x, xdot, (int)n,
+        [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
         [&](const double *p) { return initialPressure(p); }, F.data(), 0.0, nullptr);
     PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell.cell, &nc, &xc));
     PetscCall(DMPlexVecRestoreClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
@@ -441,7 +454,8 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
       const double *phi = &e.basis[q * nv];
       for (int a = 0; a < nv; ++a) {
         if (bc.kind == BcKind::traction)
-          for (int i = 0; i < dim_; ++i) F[a * dim_ + i] -= w * phi[a] * bc.value[i] * factor;
+          for (int i = 0; i < dim_; ++i)
+            F[a * dim_ + i] -= w * phi[a] * bc.value[i] * factor;
         else if (bc.kind == BcKind::flux && np == nv)
           F[nu + a] += mode.mass_scale * w * phi[a] * bc.value[0] * factor;
       }
@@ -477,9 +491,11 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
     F.assign(n, 0.0);
     K.assign(n * n, 0.0);
     CellKernel kernel{e, dim_, m, pressure && m.porous, mass_scale, {0, 0, 0}};
-    for (int d = 0; d < dim_; ++d) kernel.gravity[d] = gravityVector(d);
+    for (int d = 0; d < dim_; ++d)
+      kernel.gravity[d] = gravityVector(d);
     kernel(
-        xc, x, xdot, (int)n, [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
+        xc, x, xdot, (int)n,
+        [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
         [&](const double *p) { return initialPressure(p); }, F.data(), shift, K.data());
     PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell.cell, &nc, &xc));
     PetscCall(DMPlexVecRestoreClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));

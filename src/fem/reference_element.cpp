@@ -1,7 +1,7 @@
 #include "poroseam/reference_element.hpp"
 
-#include <petscdmplex.h>
 #include <cmath>
+#include <petscdmplex.h>
 
 namespace poroseam {
 namespace {
@@ -14,7 +14,8 @@ void simplexBasis(const ReferenceElement &e, const double xi[], double phi[], do
   // x(lambda) = v0 + sum_k lambda_k (v_k - v0); solve for lambda_1..d.
   double A[3][3] = {{0}};
   for (int r = 0; r < d; ++r)
-    for (int k = 0; k < d; ++k) A[r][k] = e.vertex_coords[(k + 1) * d + r] - e.vertex_coords[r];
+    for (int k = 0; k < d; ++k)
+      A[r][k] = e.vertex_coords[(k + 1) * d + r] - e.vertex_coords[r];
   // invert A (d <= 3)
   double inv[3][3] = {{0}};
   if (d == 1) {
@@ -38,21 +39,25 @@ void simplexBasis(const ReferenceElement &e, const double xi[], double phi[], do
     inv[2][2] = (A[0][0] * A[1][1] - A[0][1] * A[1][0]) / det;
   }
   double rel[3];
-  for (int r = 0; r < d; ++r) rel[r] = xi[r] - e.vertex_coords[r];
+  for (int r = 0; r < d; ++r)
+    rel[r] = xi[r] - e.vertex_coords[r];
   double sum = 0.0;
   for (int k = 0; k < d; ++k) {
     double lambda = 0.0;
-    for (int r = 0; r < d; ++r) lambda += inv[k][r] * rel[r];
+    for (int r = 0; r < d; ++r)
+      lambda += inv[k][r] * rel[r];
     phi[k + 1] = lambda;
     sum += lambda;
     if (dphi)
-      for (int r = 0; r < d; ++r) dphi[(k + 1) * d + r] = inv[k][r];
+      for (int r = 0; r < d; ++r)
+        dphi[(k + 1) * d + r] = inv[k][r];
   }
   phi[0] = 1.0 - sum;
   if (dphi)
     for (int r = 0; r < d; ++r) {
       double s = 0.0;
-      for (int k = 0; k < d; ++k) s += inv[k][r];
+      for (int k = 0; k < d; ++k)
+        s += inv[k][r];
       dphi[r] = -s;
     }
 }
@@ -64,9 +69,11 @@ void tensorBasis(const ReferenceElement &e, const double xi[], double phi[], dou
   const int d = e.dim;
   for (int a = 0; a < e.num_vertices; ++a) {
     double f[3];
-    for (int k = 0; k < d; ++k) f[k] = 0.5 * (1.0 + xi[k] * e.vertex_coords[a * d + k]);
+    for (int k = 0; k < d; ++k)
+      f[k] = 0.5 * (1.0 + xi[k] * e.vertex_coords[a * d + k]);
     double value = 1.0;
-    for (int k = 0; k < d; ++k) value *= f[k];
+    for (int k = 0; k < d; ++k)
+      value *= f[k];
     phi[a] = value;
     if (dphi)
       for (int k = 0; k < d; ++k) {
@@ -126,7 +133,8 @@ void setQuadrature(ReferenceElement &e)
     for (size_t q = 0; q < bary.size(); ++q) {
       for (int k = 0; k < e.dim; ++k) {
         double x = 0.0;
-        for (int a = 0; a < e.num_vertices; ++a) x += bary[q][a] * e.vertex_coords[a * e.dim + k];
+        for (int a = 0; a < e.num_vertices; ++a)
+          x += bary[q][a] * e.vertex_coords[a * e.dim + k];
         e.quadrature_points.push_back(x);
       }
       e.quadrature_weights.push_back(frac[q] * measure);
@@ -143,14 +151,25 @@ PetscErrorCode ReferenceElement::create(DMPolytopeType type, ReferenceElement *e
   PetscFunctionBeginUser;
   e.type = type;
   switch (type) {
-  case DM_POLYTOPE_SEGMENT: e.dim = 1, e.num_vertices = 2, e.simplex = true; break;
-  case DM_POLYTOPE_TRIANGLE: e.dim = 2, e.num_vertices = 3, e.simplex = true; break;
-  case DM_POLYTOPE_QUADRILATERAL: e.dim = 2, e.num_vertices = 4, e.simplex = false; break;
-  case DM_POLYTOPE_TETRAHEDRON: e.dim = 3, e.num_vertices = 4, e.simplex = true; break;
-  case DM_POLYTOPE_HEXAHEDRON: e.dim = 3, e.num_vertices = 8, e.simplex = false; break;
+  case DM_POLYTOPE_SEGMENT:
+    e.dim = 1, e.num_vertices = 2, e.simplex = true;
+    break;
+  case DM_POLYTOPE_TRIANGLE:
+    e.dim = 2, e.num_vertices = 3, e.simplex = true;
+    break;
+  case DM_POLYTOPE_QUADRILATERAL:
+    e.dim = 2, e.num_vertices = 4, e.simplex = false;
+    break;
+  case DM_POLYTOPE_TETRAHEDRON:
+    e.dim = 3, e.num_vertices = 4, e.simplex = true;
+    break;
+  case DM_POLYTOPE_HEXAHEDRON:
+    e.dim = 3, e.num_vertices = 8, e.simplex = false;
+    break;
   default:
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "poroseam supports segments, triangles, quadrilaterals, "
-                                            "tetrahedra and hexahedra; got cell type %s",
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP,
+            "poroseam supports segments, triangles, quadrilaterals, "
+            "tetrahedra and hexahedra; got cell type %s",
             DMPolytopeTypes[type]);
   }
   // The vertex coordinates of PETSc's reference cell, in closure order.
@@ -163,7 +182,8 @@ PetscErrorCode ReferenceElement::create(DMPolytopeType type, ReferenceElement *e
   PetscScalar *values = nullptr;
   PetscInt n = 0;
   PetscCall(DMPlexVecGetClosure(ref, csec, coords, 0, &n, &values));
-  PetscCheck(n == e.num_vertices * e.dim, PETSC_COMM_SELF, PETSC_ERR_PLIB, "reference cell closure");
+  PetscCheck(n == e.num_vertices * e.dim, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "reference cell closure");
   e.vertex_coords.assign(values, values + n);
   PetscCall(DMPlexVecRestoreClosure(ref, csec, coords, 0, &n, &values));
   PetscCall(DMDestroy(&ref));
@@ -179,8 +199,10 @@ PetscErrorCode ReferenceElement::create(DMPolytopeType type, ReferenceElement *e
 
 void ReferenceElement::evaluate(const double xi[], double phi[], double dphi[]) const
 {
-  if (simplex) simplexBasis(*this, xi, phi, dphi);
-  else tensorBasis(*this, xi, phi, dphi);
+  if (simplex)
+    simplexBasis(*this, xi, phi, dphi);
+  else
+    tensorBasis(*this, xi, phi, dphi);
 }
 
 namespace {
@@ -192,7 +214,8 @@ double jacobian(int dim, int nv, const double *coords, const double *dphi, doubl
   for (int r = 0; r < dim; ++r)
     for (int k = 0; k < dim; ++k) {
       double s = 0.0;
-      for (int a = 0; a < nv; ++a) s += coords[a * dim + r] * dphi[a * dim + k];
+      for (int a = 0; a < nv; ++a)
+        s += coords[a * dim + r] * dphi[a * dim + k];
       J[r][k] = s;
     }
   double det;
@@ -231,14 +254,17 @@ double mapQuadraturePoint(const ReferenceElement &e, const double *coords, int q
   g.phi = phi;
   g.det_jacobian = det;
   g.weight = e.quadrature_weights[q] * det;
-  for (int r = 0; r < 3; ++r) g.x[r] = 0.0;
+  for (int r = 0; r < 3; ++r)
+    g.x[r] = 0.0;
   for (int a = 0; a < nv; ++a)
-    for (int r = 0; r < dim; ++r) g.x[r] += phi[a] * coords[a * dim + r];
+    for (int r = 0; r < dim; ++r)
+      g.x[r] += phi[a] * coords[a * dim + r];
   // grad phi = invJ^T grad_xi phi
   for (int a = 0; a < nv; ++a)
     for (int r = 0; r < dim; ++r) {
       double s = 0.0;
-      for (int k = 0; k < dim; ++k) s += dphi[a * dim + k] * invJ[k][r];
+      for (int k = 0; k < dim; ++k)
+        s += dphi[a * dim + k] * invJ[k][r];
       g.grad_phi[a * dim + r] = s;
     }
   return det;
@@ -250,7 +276,8 @@ bool locatePoint(const ReferenceElement &e, const double *coords, const double x
   // Start at the reference centroid, Newton on x(xi) = x (one step for affine cells).
   for (int k = 0; k < dim; ++k) {
     xi[k] = 0.0;
-    for (int a = 0; a < nv; ++a) xi[k] += e.vertex_coords[a * dim + k] / nv;
+    for (int a = 0; a < nv; ++a)
+      xi[k] += e.vertex_coords[a * dim + k] / nv;
   }
   double phi[8], dphi[24];
   for (int it = 0; it < 20; ++it) {
@@ -258,11 +285,13 @@ bool locatePoint(const ReferenceElement &e, const double *coords, const double x
     double J[3][3], invJ[3][3], r[3] = {0, 0, 0};
     jacobian(dim, nv, coords, dphi, J, invJ);
     for (int a = 0; a < nv; ++a)
-      for (int k = 0; k < dim; ++k) r[k] += phi[a] * coords[a * dim + k];
+      for (int k = 0; k < dim; ++k)
+        r[k] += phi[a] * coords[a * dim + k];
     double step = 0.0;
     for (int k = 0; k < dim; ++k) {
       double dxi = 0.0;
-      for (int m = 0; m < dim; ++m) dxi += invJ[k][m] * (x[m] - r[m]);
+      for (int m = 0; m < dim; ++m)
+        dxi += invJ[k][m] * (x[m] - r[m]);
       xi[k] += dxi;
       step += std::fabs(dxi);
     }

@@ -4,7 +4,10 @@
 
 namespace poroseam {
 
-std::string boundaryLabelName(const std::string &boundary) { return "boundary " + boundary; }
+std::string boundaryLabelName(const std::string &boundary)
+{
+  return "boundary " + boundary;
+}
 
 PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
 {
@@ -24,7 +27,8 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
       PetscInt n;
       PetscCall(ISGetLocalSize(cells, &n));
       PetscCall(ISGetIndices(cells, &idx));
-      for (PetscInt i = 0; i < n; ++i) PetscCall(DMLabelSetValue(porous, idx[i], 1));
+      for (PetscInt i = 0; i < n; ++i)
+        PetscCall(DMLabelSetValue(porous, idx[i], 1));
       PetscCall(ISRestoreIndices(cells, &idx));
       PetscCall(ISDestroy(&cells));
     }
@@ -42,7 +46,8 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
       PetscInt n;
       PetscCall(ISGetLocalSize(faces, &n));
       PetscCall(ISGetIndices(faces, &idx));
-      for (PetscInt i = 0; i < n; ++i) PetscCall(DMLabelSetValue(label, idx[i], 1));
+      for (PetscInt i = 0; i < n; ++i)
+        PetscCall(DMLabelSetValue(label, idx[i], 1));
       PetscCall(ISRestoreIndices(faces, &idx));
       PetscCall(ISDestroy(&faces));
     }
@@ -104,7 +109,8 @@ PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
     PetscCall(hasPressure(v, &hasP));
     const unsigned bits = constrained[v - vStart];
     int cu = 0;
-    for (int d = 0; d < dim; ++d) cu += (bits >> d) & 1u;
+    for (int d = 0; d < dim; ++d)
+      cu += (bits >> d) & 1u;
     const int cp = hasP && ((bits >> dim) & 1u);
     PetscCall(PetscSectionSetDof(s, v, dim + (hasP ? 1 : 0)));
     PetscCall(PetscSectionSetFieldDof(s, v, kDisplacementField, dim));

@@ -18,7 +18,8 @@ bool fileExists(const std::string &path)
 
 bool endsWith(const std::string &s, const std::string &suffix)
 {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 /// Reads the $PhysicalNames block of a Gmsh file: lines `dim tag "name"`.
@@ -41,7 +42,8 @@ std::string readPhysicalNames(const std::string &path, std::vector<PhysicalName>
       std::istringstream fields(line);
       fields >> n.dim >> n.tag;
       const auto a = line.find('"'), b = line.rfind('"');
-      if (a == std::string::npos || b <= a) return "mesh file '" + path + "': bad $PhysicalNames line";
+      if (a == std::string::npos || b <= a)
+        return "mesh file '" + path + "': bad $PhysicalNames line";
       n.name = line.substr(a + 1, b - a - 1);
       names.push_back(n);
     }
@@ -82,15 +84,18 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
   std::string error, msh = file;
   std::vector<PhysicalName> found;
   if (rank == 0) {
-    if (!fileExists(file)) error = "mesh file '" + file + "' (option -mesh) does not exist";
-    else if (endsWith(file, ".geo")) error = meshGeometry(file, size_factor, work_dir, msh);
+    if (!fileExists(file))
+      error = "mesh file '" + file + "' (option -mesh) does not exist";
+    else if (endsWith(file, ".geo"))
+      error = meshGeometry(file, size_factor, work_dir, msh);
     else if (!endsWith(file, ".msh"))
       error = "mesh file '" + file + "' (option -mesh): expected a Gmsh .msh or .geo file";
     if (error.empty()) error = readPhysicalNames(msh, found);
   }
   std::ostringstream packed;
   packed << error.size() << '\n' << error << '\n' << msh << '\n' << found.size() << '\n';
-  for (const auto &n : found) packed << n.dim << ' ' << n.tag << ' ' << n.name << '\n';
+  for (const auto &n : found)
+    packed << n.dim << ' ' << n.tag << ' ' << n.name << '\n';
   std::string text = packed.str();
   int length = (int)text.size();
   PetscCallMPI(MPI_Bcast(&length, 1, MPI_INT, 0, comm));
@@ -167,11 +172,13 @@ PetscErrorCode checkCellOrientation(DM dm)
       if (mapQuadraturePoint(e, x, q, g) <= 0.0) {
         double centroid[3] = {0, 0, 0};
         for (int a = 0; a < e.num_vertices; ++a)
-          for (int k = 0; k < dim; ++k) centroid[k] += x[a * dim + k] / e.num_vertices;
+          for (int k = 0; k < dim; ++k)
+            centroid[k] += x[a * dim + k] / e.num_vertices;
         PetscCall(PetscSNPrintf(message, sizeof(message),
                                 "inverted element: %s cell %d with centroid (%g, %g, %g) has a "
                                 "non-positive Jacobian determinant; fix its node order in the mesh",
-                                DMPolytopeTypes[ct], (int)c, centroid[0], centroid[1], centroid[2]));
+                                DMPolytopeTypes[ct], (int)c, centroid[0], centroid[1],
+                                centroid[2]));
         break;
       }
     }

@@ -5,10 +5,12 @@ namespace poroseam::physics {
 void darcyFlux(const BiotProperties &b, int dim, const double grad_p[], const double gravity[],
                double flux[])
 {
-  for (int d = 0; d < dim; ++d) flux[d] = -b.mobility * (grad_p[d] - b.fluid_density * gravity[d]);
+  for (int d = 0; d < dim; ++d)
+    flux[d] = -b.mobility * (grad_p[d] - b.fluid_density * gravity[d]);
 }
 
-double fluidContentRate(const BiotProperties &b, double volumetric_strain_rate, double pressure_rate)
+double fluidContentRate(const BiotProperties &b, double volumetric_strain_rate,
+                        double pressure_rate)
 {
   return b.biot_coefficient * volumetric_strain_rate + b.storage * pressure_rate;
 }

@@ -14,7 +14,8 @@ void elasticStress(const ElasticModuli &m, const double strain[3][3], double str
 {
   const double trace = strain[0][0] + strain[1][1] + strain[2][2];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) stress[i][j] = 2.0 * m.shear * strain[i][j] + (i == j ? m.lambda * trace : 0.0);
+    for (int j = 0; j < 3; ++j)
+      stress[i][j] = 2.0 * m.shear * strain[i][j] + (i == j ? m.lambda * trace : 0.0);
 }
 
 double elasticTangent(const ElasticModuli &m, int i, int j, int k, int l)

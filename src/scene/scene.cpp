@@ -1,8 +1,8 @@
 #include "poroseam/scene.hpp"
 
-#include <petscsys.h>
 #include <algorithm>
 #include <cctype>
+#include <petscsys.h>
 #include <set>
 #include <sstream>
 
@@ -54,7 +54,8 @@ PetscErrorCode getString(const std::string &option, std::string &value, bool *se
   char buffer[PETSC_MAX_PATH_LEN];
   PetscBool found = PETSC_FALSE;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, option.c_str(), buffer, sizeof(buffer), &found));
+  PetscCall(
+      PetscOptionsGetString(nullptr, nullptr, option.c_str(), buffer, sizeof(buffer), &found));
   if (found) value = buffer;
   if (set) *set = found;
   PetscFunctionReturn(0);
@@ -101,10 +102,14 @@ PetscErrorCode readRegion(MPI_Comm comm, Region &r, bool gravity, bool drained)
   bool set = false;
   PetscFunctionBeginUser;
   PetscCall(getString(p + "material", material, &set));
-  PetscCheck(set, comm, PETSC_ERR_USER_INPUT, "missing option %smaterial: region '%s' needs "
-             "'elastic' or 'biot'", p.c_str(), r.name.c_str());
-  if (material == "elastic") r.model = MaterialModel::elastic;
-  else if (material == "biot") r.model = MaterialModel::biot;
+  PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
+             "missing option %smaterial: region '%s' needs "
+             "'elastic' or 'biot'",
+             p.c_str(), r.name.c_str());
+  if (material == "elastic")
+    r.model = MaterialModel::elastic;
+  else if (material == "biot")
+    r.model = MaterialModel::biot;
   else
     SETERRQ(comm, PETSC_ERR_USER_INPUT, "%smaterial %s: expected 'elastic' or 'biot'", p.c_str(),
             material.c_str());
@@ -162,7 +167,8 @@ PetscErrorCode readTimeFunction(MPI_Comm comm, const std::string &option, TimeFu
   } else if (table_set) {
     std::vector<double> t, v;
     const std::string err = readTimeTable(table, t, v);
-    PetscCheck(err.empty(), comm, PETSC_ERR_USER_INPUT, "%s_table: %s", option.c_str(), err.c_str());
+    PetscCheck(err.empty(), comm, PETSC_ERR_USER_INPUT, "%s_table: %s", option.c_str(),
+               err.c_str());
     f = TimeFunction::table(t, v);
   }
   PetscFunctionReturn(0);
@@ -271,7 +277,8 @@ PetscErrorCode checkOptionNames(MPI_Comm comm, const Scene &scene)
   }
   for (const auto &opt : optionsWithPrefix(text, "bc_")) {
     bool known = false;
-    for (const auto &b : scene.boundaries) known = known || opt.rfind("bc_" + b.name + "_", 0) == 0;
+    for (const auto &b : scene.boundaries)
+      known = known || opt.rfind("bc_" + b.name + "_", 0) == 0;
     PetscCheck(known, comm, PETSC_ERR_USER_INPUT,
                "option -%s names a boundary that is not in -boundaries", opt.c_str());
   }
@@ -294,7 +301,8 @@ PetscErrorCode readProbes(MPI_Comm comm, Scene &scene)
     PetscCheck((int)x.size() == scene.dim, comm, PETSC_ERR_USER_INPUT,
                "-%s: expected %d comma-separated coordinates, got %d", opt.c_str(), scene.dim,
                (int)x.size());
-    for (int d = 0; d < scene.dim; ++d) probe.x[d] = x[d];
+    for (int d = 0; d < scene.dim; ++d)
+      probe.x[d] = x[d];
     scene.probes.push_back(probe);
   }
   PetscFunctionReturn(0);
@@ -344,8 +352,8 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
              scene.gravity);
   PetscCall(getReal("-fluid_density", &scene.fluid_density, nullptr));
   PetscCall(getReal("-fluid_viscosity", &scene.fluid_viscosity, nullptr));
-  PetscCheck(scene.fluid_density > 0.0, comm, PETSC_ERR_USER_INPUT, "-fluid_density %g: must be > 0",
-             scene.fluid_density);
+  PetscCheck(scene.fluid_density > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-fluid_density %g: must be > 0", scene.fluid_density);
   PetscCheck(scene.fluid_viscosity > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-fluid_viscosity %g: must be > 0", scene.fluid_viscosity);
   PetscCall(getReal("-stabilization_factor", &scene.stabilization_factor, nullptr));
@@ -376,7 +384,8 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
     PetscCall(findPhysical(comm, names, dim, name, "-regions", "region", &r.tag));
     scene.regions.push_back(r);
   }
-  for (auto &r : scene.regions) PetscCall(readRegion(comm, r, scene.gravity > 0.0, scene.drained));
+  for (auto &r : scene.regions)
+    PetscCall(readRegion(comm, r, scene.gravity > 0.0, scene.drained));
 
   PetscCall(getStringList("-boundaries", list, &set));
   scene.boundaries.clear();
@@ -387,7 +396,8 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
     scene.boundaries.push_back(b);
   }
   scene.conditions.clear();
-  for (const auto &b : scene.boundaries) PetscCall(readBoundary(comm, scene, b, scene.conditions));
+  for (const auto &b : scene.boundaries)
+    PetscCall(readBoundary(comm, scene, b, scene.conditions));
   PetscCall(checkOptionNames(comm, scene));
 
   PetscInt every = scene.output_every;

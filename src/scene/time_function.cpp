@@ -6,7 +6,10 @@
 
 namespace poroseam {
 
-TimeFunction TimeFunction::step() { return TimeFunction(); }
+TimeFunction TimeFunction::step()
+{
+  return TimeFunction();
+}
 
 TimeFunction TimeFunction::ramp(double ramp_time)
 {
@@ -28,8 +31,10 @@ TimeFunction TimeFunction::table(std::vector<double> times, std::vector<double> 
 double TimeFunction::factor(double t) const
 {
   switch (kind_) {
-  case Kind::step: return t > 0.0 ? 1.0 : 0.0;
-  case Kind::ramp: return t <= 0.0 ? 0.0 : std::min(t / ramp_time_, 1.0);
+  case Kind::step:
+    return t > 0.0 ? 1.0 : 0.0;
+  case Kind::ramp:
+    return t <= 0.0 ? 0.0 : std::min(t / ramp_time_, 1.0);
   case Kind::table: {
     if (t <= times_.front()) return factors_.front();
     if (t >= times_.back()) return factors_.back();

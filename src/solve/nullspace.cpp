@@ -36,12 +36,18 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, IS displacement, MatNullSpace *spa
       PetscCall(PetscSectionGetOffset(csec, v, &coff));
       const double *p = &x[coff];
       double mode[3] = {0, 0, 0};
-      if (m < dim) mode[m] = 1.0;
-      else if (dim == 2) mode[0] = -p[1], mode[1] = p[0];
-      else if (m == 3) mode[0] = -p[1], mode[1] = p[0];
-      else if (m == 4) mode[1] = -p[2], mode[2] = p[1];
-      else mode[0] = p[2], mode[2] = -p[0];
-      for (int d = 0; d < dim; ++d) u[off + d] = mode[d];
+      if (m < dim)
+        mode[m] = 1.0;
+      else if (dim == 2)
+        mode[0] = -p[1], mode[1] = p[0];
+      else if (m == 3)
+        mode[0] = -p[1], mode[1] = p[0];
+      else if (m == 4)
+        mode[1] = -p[2], mode[2] = p[1];
+      else
+        mode[0] = p[2], mode[2] = -p[0];
+      for (int d = 0; d < dim; ++d)
+        u[off + d] = mode[d];
     }
     PetscCall(VecRestoreArray(local, &u));
     PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, global));
@@ -65,7 +71,8 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, IS displacement, MatNullSpace *spa
   }
   PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)dm), PETSC_FALSE, count, modes.data(),
                                space));
-  for (auto &v : modes) PetscCall(VecDestroy(&v));
+  for (auto &v : modes)
+    PetscCall(VecDestroy(&v));
   PetscFunctionReturn(0);
 }
 

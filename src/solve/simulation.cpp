@@ -8,9 +8,9 @@
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
 
-#include <petscts.h>
 #include <cmath>
 #include <cstdio>
+#include <petscts.h>
 #include <string>
 #include <vector>
 
@@ -39,8 +39,8 @@ struct Run {
   PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
   double step_start = 0.0;
   int step = 0;
-  double residual_scale = 0.0;            ///< largest initial Newton residual of the run
-  double reference_rtol = 1e-11;          ///< -snes_reference_rtol
+  double residual_scale = 0.0;   ///< largest initial Newton residual of the run
+  double reference_rtol = 1e-11; ///< -snes_reference_rtol
 };
 
 PetscErrorCode currentDt(Run &run, double *dt)
@@ -133,7 +133,8 @@ PetscErrorCode collectBoundaryDofs(Run &run)
       PetscInt off, dof = 0;
       PetscCall(PetscSectionGetFieldOffset(s, v, kDisplacementField, &off));
       run.boundary_dofs[b].displacement.push_back(off);
-      if (numFields > kPressureField) PetscCall(PetscSectionGetFieldDof(s, v, kPressureField, &dof));
+      if (numFields > kPressureField)
+        PetscCall(PetscSectionGetFieldDof(s, v, kPressureField, &dof));
       if (dof) {
         PetscCall(PetscSectionGetFieldOffset(s, v, kPressureField, &off));
         run.boundary_dofs[b].pressure.push_back(off);
@@ -160,8 +161,10 @@ PetscErrorCode boundaryResultants(Run &run, double t, Vec local, Vec rate, std::
   for (size_t b = 0; b < run.boundary_dofs.size(); ++b) {
     // Each rank holds only its own cells' contributions, so the sum over ranks counts each once.
     for (PetscInt off : run.boundary_dofs[b].displacement)
-      for (int d = 0; d < dim; ++d) mine[b * per + d] += r[off + d];
-    for (PetscInt off : run.boundary_dofs[b].pressure) mine[b * per + dim] -= r[off];
+      for (int d = 0; d < dim; ++d)
+        mine[b * per + d] += r[off + d];
+    for (PetscInt off : run.boundary_dofs[b].pressure)
+      mine[b * per + dim] -= r[off];
   }
   PetscCall(VecRestoreArrayRead(f, &r));
   PetscCall(DMRestoreLocalVector(run.dm, &f));
@@ -183,11 +186,13 @@ PetscErrorCode openTimeSeries(Run &run)
   const char *axis[3] = {"x", "y", "z"};
   std::fprintf(run.csv, "step,time,dt,load,newton_its,ksp_its,rejected,wall_time");
   for (const auto &b : run.scene.boundaries) {
-    for (int d = 0; d < run.scene.dim; ++d) std::fprintf(run.csv, ",%s.F%s", b.name.c_str(), axis[d]);
+    for (int d = 0; d < run.scene.dim; ++d)
+      std::fprintf(run.csv, ",%s.F%s", b.name.c_str(), axis[d]);
     if (run.scene.hasPressure()) std::fprintf(run.csv, ",%s.flux", b.name.c_str());
   }
   for (const auto &p : run.scene.probes) {
-    for (int d = 0; d < run.scene.dim; ++d) std::fprintf(run.csv, ",%s.u%s", p.name.c_str(), axis[d]);
+    for (int d = 0; d < run.scene.dim; ++d)
+      std::fprintf(run.csv, ",%s.u%s", p.name.c_str(), axis[d]);
     std::fprintf(run.csv, ",%s.p", p.name.c_str());
   }
   std::fprintf(run.csv, "\n");
@@ -207,10 +212,12 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
     std::fprintf(run.csv, "%d,%.10e,%.10e,%.6g,%d,%d,%d,%.4e", run.step, t, dt,
                  run.problem.loadFactor(t), (int)newton, (int)ksp, (int)rejected, wall);
     for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
-      for (int d = 0; d < dim; ++d) std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + d]);
+      for (int d = 0; d < dim; ++d)
+        std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + d]);
       if (run.scene.hasPressure()) std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + dim]);
     }
-    for (double v : probes) std::fprintf(run.csv, ",%.12e", v);
+    for (double v : probes)
+      std::fprintf(run.csv, ",%.12e", v);
     std::fprintf(run.csv, "\n");
     std::fflush(run.csv);
   }
@@ -333,7 +340,8 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(run.probes.setup(run.dm, run.scene));
   PetscCall(collectBoundaryDofs(run));
   PetscCall(printFieldSizes(run));
-  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-test_fail_dt_above", &run.fail_dt_above, nullptr));
+  PetscCall(
+      PetscOptionsGetReal(nullptr, nullptr, "-test_fail_dt_above", &run.fail_dt_above, nullptr));
 
   // Initial state and its boundary values.
   PetscCall(DMCreateLocalVector(run.dm, &run.previous));
@@ -365,7 +373,8 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   SNES snes;
   PetscCall(TSGetSNES(run.ts, &snes));
   PetscCall(SNESSetType(snes, SNESNEWTONLS));
-  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-snes_reference_rtol", &run.reference_rtol, nullptr));
+  PetscCall(
+      PetscOptionsGetReal(nullptr, nullptr, "-snes_reference_rtol", &run.reference_rtol, nullptr));
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene));
@@ -378,7 +387,8 @@ PetscErrorCode runSimulation(MPI_Comm comm)
              run.nominal_dt);
 
   PetscCall(openTimeSeries(run));
-  if (run.scene.output_every > 0) PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields"));
+  if (run.scene.output_every > 0)
+    PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields"));
   {
     // Row 0: the initial state.
     Vec rate;
