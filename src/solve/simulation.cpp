@@ -36,6 +36,7 @@ struct Run {
   FILE *csv = nullptr;
   double nominal_dt = 0.0;
   double fail_dt_above = 0.0; ///< test hook: step attempts with a larger dt fail
+  double attempted_dt = 0.0;  ///< dt of the last residual evaluation
   PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
   double step_start = 0.0;
   int step = 0;
@@ -66,6 +67,7 @@ PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f,
   double dt;
   PetscFunctionBeginUser;
   PetscCall(currentDt(run, &dt));
+  run.attempted_dt = dt;
   if (run.fail_dt_above > 0.0 && dt > run.fail_dt_above) {
     // Test hook standing in for a step too large to converge (see -test_fail_dt_above).
     SNES snes;
@@ -232,6 +234,9 @@ PetscErrorCode postStep(TS ts)
   PetscFunctionBeginUser;
   PetscCall(TSGetApplicationContext(ts, &ctx));
   Run &run = *static_cast<Run *>(ctx);
+  TSConvergedReason reason;
+  PetscCall(TSGetConvergedReason(ts, &reason));
+  if (reason < 0) PetscFunctionReturn(0); // TS calls this after a failed step too: record nothing
   ++run.step;
   double t, t_previous;
   PetscCall(TSGetTime(ts, &t));
@@ -399,7 +404,24 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   }
   run.step_start = MPI_Wtime();
   const double t0 = MPI_Wtime();
+  PetscCall(TSSetErrorIfStepFails(run.ts, PETSC_FALSE));
   PetscCall(TSSolve(run.ts, X));
+  TSConvergedReason reason;
+  PetscCall(TSGetConvergedReason(run.ts, &reason));
+  if (reason < 0) {
+    double t;
+    PetscInt rejects = 8;
+    PetscCall(TSGetTime(run.ts, &t));
+    PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ts_max_reject", &rejects, nullptr));
+    if (run.csv) std::fclose(run.csv);
+    PetscCall(run.fields.close());
+    SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
+            "step %d failed (%s): Newton did not converge from t = %g s even after %d cuts of "
+            "the time step (last tried dt = %g s). Results up to t = %g s are in %s; a smaller "
+            "-ts_dt, more cuts (-ts_max_reject) or other solver options may help",
+            run.step + 1, TSConvergedReasons[reason], t, (int)rejects, run.attempted_dt, t,
+            run.scene.output_dir.c_str());
+  }
   PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
                         MPI_Wtime() - t0, run.scene.output_dir.c_str()));
   if (run.csv) std::fclose(run.csv);
