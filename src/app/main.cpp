@@ -3,8 +3,8 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/simulation.hpp"
 
-#include <petscsys.h>
 #include <cstdio>
+#include <petscsys.h>
 
 static const char help[] = "poroseam: Biot consolidation with zero-thickness hydro-mechanical "
                            "interfaces.\nUsage: poroseam -options_file options/<scene>.opts\n";

@@ -1,0 +1,37 @@
+// Terzaghi consolidation column, 2D plane strain, structured quadrilaterals.
+// x horizontal, y vertical: 0 <= x <= W, 0 <= y <= H (top at y = H).
+// Physical curves: top, bottom, left, right; physical surface: soil.
+//
+// Refinement: transfinite counts ignore gmsh's -clscale, so the counts are computed from it:
+// the number of elements along each side is ceil(base / Mesh.CharacteristicLengthFactor)
+// (poroseam's -mesh_size_factor F is passed to gmsh as -clscale F, so F = 0.5 doubles the
+// number of elements in each direction).  The base counts can be overridden with
+// gmsh -setnumber ny 40 (etc.).
+W = 0.1;  H = 1.0;
+If (!Exists(ny)) ny = 20; EndIf   // elements along the height at factor 1 (h = H/ny)
+If (!Exists(nx)) nx = 2;  EndIf   // elements across the width at factor 1
+f = Mesh.CharacteristicLengthFactor;
+NX = Ceil(nx / f - 1e-9); NY = Ceil(ny / f - 1e-9);
+Printf("terzaghi_column_2d: %g x %g elements (factor %g)", NX, NY, f);
+
+Point(1) = {0, 0, 0, H / ny};
+Point(2) = {W, 0, 0, H / ny};
+Point(3) = {W, H, 0, H / ny};
+Point(4) = {0, H, 0, H / ny};
+Line(1) = {1, 2};   // bottom
+Line(2) = {2, 3};   // right
+Line(3) = {3, 4};   // top
+Line(4) = {4, 1};   // left
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = NX + 1;
+Transfinite Curve{2, 4} = NY + 1;
+Transfinite Surface{1};
+If (!Exists(triangles)) triangles = 0; EndIf
+If (!triangles) Recombine Surface{1}; EndIf
+
+Physical Curve("bottom") = {1};
+Physical Curve("right") = {2};
+Physical Curve("top") = {3};
+Physical Curve("left") = {4};
+Physical Surface("soil") = {1};
