@@ -1,0 +1,69 @@
+#include "poroseam/contact.hpp"
+
+#include <cmath>
+
+namespace poroseam::physics {
+
+ContactResponse contactResponse(const ContactParameters &p, const ContactInitial &initial,
+                                const ContactHistory &history, int tangential_dims,
+                                double gap_normal, const double gap_tangential[])
+{
+  ContactResponse r;
+  const int nt = tangential_dims;
+  for (int k = 0; k < nt; ++k)
+    r.updated.gap_tangential[k] = gap_tangential[k];
+  // Normal: penalty from the initial state, no tension.
+  const double pressure =
+      initial.contact_pressure_effective - p.normal_stiffness * (gap_normal - initial.gap_normal);
+  if (pressure <= 0.0) {
+    // Open: no traction; the history keeps tau = 0 so that a new contact starts unstressed.
+    r.state = ContactState::open;
+    return r;
+  }
+  r.contact_pressure_effective = pressure;
+  r.tangent[0][0] = -p.normal_stiffness;
+
+  // Tangential: elastic predictor from the last converged state, then Coulomb return.
+  double trial[2] = {0.0, 0.0}, norm2 = 0.0;
+  for (int k = 0; k < nt; ++k) {
+    trial[k] =
+        history.shear[k] + p.tangential_stiffness * (gap_tangential[k] - history.gap_tangential[k]);
+    norm2 += trial[k] * trial[k];
+  }
+  const double norm = std::sqrt(norm2);
+  const double limit = p.friction * pressure;
+  if (norm <= limit) {
+    r.state = ContactState::stick;
+    for (int k = 0; k < nt; ++k) {
+      r.shear[k] = trial[k];
+      r.tangent[1 + k][1 + k] = p.tangential_stiffness;
+    }
+  } else {
+    // Slip: tau = mu p'_N n, n = trial / |trial|; d tau / d g_N = -mu K_N n and
+    // d tau / d g_T = (mu p'_N K_T / |trial|) (I - n n^T).
+    r.state = ContactState::slip;
+    double n[2] = {0.0, 0.0};
+    for (int k = 0; k < nt; ++k)
+      n[k] = trial[k] / norm;
+    const double scale = limit * p.tangential_stiffness / norm;
+    for (int k = 0; k < nt; ++k) {
+      r.shear[k] = limit * n[k];
+      r.tangent[1 + k][0] = -p.friction * p.normal_stiffness * n[k];
+      for (int l = 0; l < nt; ++l)
+        r.tangent[1 + k][1 + l] = scale * ((k == l) - n[k] * n[l]);
+    }
+  }
+  for (int k = 0; k < nt; ++k)
+    r.updated.shear[k] = r.shear[k];
+  return r;
+}
+
+double mechanicalOpening(const ContactParameters &p, const ContactInitial &initial,
+                         double gap_normal)
+{
+  const double o =
+      gap_normal - initial.gap_normal - initial.contact_pressure_effective / p.normal_stiffness;
+  return o > 0.0 ? o : 0.0;
+}
+
+} // namespace poroseam::physics
