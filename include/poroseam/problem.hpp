@@ -3,6 +3,7 @@
 // values, and the initial (geostatic) state. Point laws come from physics/.
 #pragma once
 
+#include "poroseam/interface_mechanics.hpp"
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
 #include <map>
@@ -13,9 +14,9 @@ namespace poroseam {
 
 /// How a residual is evaluated.
 struct ResidualMode {
-  /// Factor on the mass balance. The solver uses -dt, which turns the coupled system into a
-  /// symmetric saddle point (and keeps both rows in force-like units); 1 gives fluid volume
-  /// rates [m3/s] for output.
+  /// Factor on the mass balance. The solver uses -dt S (see massBalanceScale): the coupling
+  /// blocks then have opposite signs like a saddle point, and the rows are forces; 1 gives
+  /// fluid volume rates [m3/s] for output.
   double mass_scale = 1.0;
   /// Include applied tractions and fluxes. Without them the residual at a vertex is the
   /// force (and water rate) the surroundings exert on the body there: reactions and outflows.
@@ -42,6 +43,16 @@ public:
   /// dF/dx + shift dF/dxdot assembled into J (zeroed here), with mass_scale as in residual.
   PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate, double mass_scale,
                           Mat J) const;
+
+  /// Commits integration-point history (interfaces) of a converged state.
+  PetscErrorCode commit(Vec local) { return interfaces_.commit(local); }
+  const InterfaceMechanics &interfaces() const { return interfaces_; }
+
+  /// Factor S [Pa/m] that turns the mass balance times dt (a volume) into a force: the largest
+  /// constrained modulus of the porous regions over their mean cell size. The solver
+  /// multiplies the mass balance by -dt S, one constant for all rows, so the discrete
+  /// equations are unchanged but both kinds of residual row are forces.
+  double massBalanceScale() const { return mass_balance_scale_; }
 
   /// Load factor shown in progress lines: the first ramped or tabulated condition, else 1.
   double loadFactor(double t) const;
@@ -81,6 +92,8 @@ private:
   std::vector<BulkCell> cells_;
   std::vector<LoadedFace> faces_;
   std::vector<ConstrainedDof> constrained_;
+  InterfaceMechanics interfaces_;
+  double mass_balance_scale_ = 1.0;
 };
 
 } // namespace poroseam

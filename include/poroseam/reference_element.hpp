@@ -13,6 +13,9 @@ public:
   /// Builds the element for a DMPlex cell type (segment, triangle, quadrilateral, tetrahedron,
   /// hexahedron). Vertex coordinates are taken from DMPlexCreateReferenceCell.
   static PetscErrorCode create(DMPolytopeType type, ReferenceElement *element);
+  /// The same element with the nodal (Newton-Cotes/Lobatto) rule: one point at every vertex,
+  /// equal weights. Exact for linear integrands; lumps interface tractions to the nodes.
+  static PetscErrorCode createNodal(DMPolytopeType type, ReferenceElement *element);
 
   DMPolytopeType type = DM_POLYTOPE_UNKNOWN;
   int dim = 0;
@@ -45,6 +48,14 @@ struct PointGeometry {
 /// `coords` (num_vertices x dim). Returns det J; a non-positive value means an inverted cell.
 double mapQuadraturePoint(const ReferenceElement &element, const double *coords, int q,
                           PointGeometry &g);
+
+/// Measure of quadrature point q of a face element (dim - 1) embedded in space of dimension
+/// `space`: the quadrature weight times the surface Jacobian.
+double surfaceWeight(const ReferenceElement &face, const double *coords, int space, int q);
+
+/// Normal of a face from the order of its vertices (not normalised; Newell's method in 3D,
+/// so warped quadrilaterals get their mean normal). coords: nv x space.
+void faceNormal(const double *coords, int nv, int space, double n[3]);
 
 /// Inverse map: reference coordinates of physical point x (Newton, exact for affine cells).
 /// Returns true when x lies inside the cell (with a small tolerance).

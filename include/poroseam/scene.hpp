@@ -53,6 +53,19 @@ struct Boundary {
   int tag = 0;
 };
 
+/// A zero-thickness interface: one or more Gmsh face groups split into cohesive cells.
+struct Interface {
+  std::string name;
+  std::vector<std::string> surfaces; ///< Gmsh physical names of its faces (its named parts)
+  std::vector<int> tags;             ///< their tags in "Face Sets"
+  std::string side1;                 ///< region on side 1 (the normal e1 points away from it)
+  int side1_tag = 0;
+  double normal_stiffness = 0.0;     ///< K_N [Pa/m]
+  double tangential_stiffness = 0.0; ///< K_T [Pa/m]
+  double friction = 0.0;             ///< mu [-]
+  bool nodal_integration = false;    ///< Newton-Cotes/Lobatto points at the vertices
+};
+
 struct Probe {
   std::string name;
   std::array<double, 3> x{{0, 0, 0}};
@@ -66,6 +79,7 @@ struct Scene {
   std::vector<Region> regions;
   std::vector<Boundary> boundaries;
   std::vector<BoundaryCondition> conditions;
+  std::vector<Interface> interfaces;
 
   bool drained = false;           ///< no pressure unknowns anywhere
   double gravity = 0.0;           ///< g [m/s2], along -y (2D) or -z (3D); 0 switches it off

@@ -3,6 +3,7 @@
 #include "poroseam/biot.hpp"
 #include "poroseam/collective_check.hpp"
 #include "poroseam/elastic.hpp"
+#include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 
 #include <cmath>
@@ -11,29 +12,6 @@
 
 namespace poroseam {
 namespace {
-
-/// Measure of quadrature point q of a face element embedded in space of dimension `space`.
-double faceWeight(const ReferenceElement &e, const double *coords, int space, int q)
-{
-  const double *dphi = &e.basis_derivatives[q * e.num_vertices * e.dim];
-  double t[2][3] = {{0, 0, 0}, {0, 0, 0}};
-  for (int k = 0; k < e.dim; ++k)
-    for (int a = 0; a < e.num_vertices; ++a)
-      for (int r = 0; r < space; ++r)
-        t[k][r] += coords[a * space + r] * dphi[a * e.dim + k];
-  double measure;
-  if (e.dim == 0)
-    measure = 1.0;
-  else if (e.dim == 1)
-    measure = std::sqrt(t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2]);
-  else {
-    const double n[3] = {t[0][1] * t[1][2] - t[0][2] * t[1][1],
-                         t[0][2] * t[1][0] - t[0][0] * t[1][2],
-                         t[0][0] * t[1][1] - t[0][1] * t[1][0]};
-    measure = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  }
-  return e.quadrature_weights[q] * measure;
-}
 
 /// Cell size h for the stabilisation. Tensor cells: the edge of the square or cube of the same
 /// volume, the element length of Aguilar et al.'s 1D analysis, where factor 1/4 is optimal.
@@ -124,6 +102,7 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(dm, c, &ct));
+    if (isCohesive(ct)) continue; // interfaces: InterfaceMechanics
     PetscInt tag = -1;
     if (cellSets) PetscCall(DMLabelGetValue(cellSets, c, &tag));
     const int region = scene.regionIndexOfTag((int)tag);
@@ -151,6 +130,22 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     cells_.push_back(bc);
   }
   PetscCall(checkOnAllRanks(comm, error));
+  {
+    double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
+    for (const auto &cell : cells_) {
+      const Region &r = scene.regions[cell.region];
+      if (!r.porous()) continue;
+      local[0] += cell.size;
+      local[1] += 1.0;
+      local[2] = std::max(local[2], physics::lameFromYoung(r.young, r.poisson).constrained());
+    }
+    PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&local[2], &global[2], 1, MPI_DOUBLE, MPI_MAX, comm));
+    mass_balance_scale_ = global[1] > 0.0 ? global[2] / (global[0] / global[1]) : 1.0;
+  }
+  PetscCall(interfaces_.setup(dm, scene, [this](const double x[], int tag, double s0[3][3]) {
+    initialStress(x, scene_->regionIndexOfTag(tag), s0);
+  }));
 
   // Faces carrying tractions or fluxes: integrated once, by the rank that owns the face.
   PetscSF sf;
@@ -434,6 +429,7 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
     // ADD_ALL_VALUES keeps the entries of constrained dofs: they are the reactions.
     PetscCall(DMPlexVecSetClosure(dm_, s, f, cell.cell, F.data(), ADD_ALL_VALUES));
   }
+  PetscCall(interfaces_.residual(local, f));
   if (!mode.include_loads) PetscFunctionReturn(0);
   // Natural conditions: R_u -= int t . v, R_p += s int psi q_n.
   for (const auto &face : faces_) {
@@ -449,7 +445,7 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
     const int nv = e.num_vertices, nu = nv * dim_;
     const int np = (int)n - nu;
     for (int q = 0; q < e.num_quadrature; ++q) {
-      const double w = faceWeight(e, xc, dim_, q);
+      const double w = surfaceWeight(e, xc, dim_, q);
       const double *phi = &e.basis[q * nv];
       for (int a = 0; a < nv; ++a) {
         if (bc.kind == BcKind::traction)
@@ -501,6 +497,7 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
     PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &x));
     PetscCall(DMPlexMatSetClosure(dm_, s, gs, J, cell.cell, K.data(), ADD_VALUES));
   }
+  PetscCall(interfaces_.jacobian(local, J));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);

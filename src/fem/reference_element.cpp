@@ -197,6 +197,61 @@ PetscErrorCode ReferenceElement::create(DMPolytopeType type, ReferenceElement *e
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ReferenceElement::createNodal(DMPolytopeType type, ReferenceElement *element)
+{
+  ReferenceElement &e = *element;
+  PetscFunctionBeginUser;
+  PetscCall(create(type, element));
+  double measure = 0.0;
+  for (double w : e.quadrature_weights)
+    measure += w;
+  e.num_quadrature = e.num_vertices;
+  e.quadrature_points = e.vertex_coords;
+  e.quadrature_weights.assign(e.num_vertices, measure / e.num_vertices);
+  e.basis.resize(e.num_quadrature * e.num_vertices);
+  e.basis_derivatives.resize(e.num_quadrature * e.num_vertices * e.dim);
+  for (int q = 0; q < e.num_quadrature; ++q)
+    e.evaluate(&e.quadrature_points[q * e.dim], &e.basis[q * e.num_vertices],
+               &e.basis_derivatives[q * e.num_vertices * e.dim]);
+  PetscFunctionReturn(0);
+}
+
+double surfaceWeight(const ReferenceElement &e, const double *coords, int space, int q)
+{
+  const double *dphi = &e.basis_derivatives[q * e.num_vertices * e.dim];
+  double t[2][3] = {{0, 0, 0}, {0, 0, 0}};
+  for (int k = 0; k < e.dim; ++k)
+    for (int a = 0; a < e.num_vertices; ++a)
+      for (int r = 0; r < space; ++r)
+        t[k][r] += coords[a * space + r] * dphi[a * e.dim + k];
+  double measure = 1.0;
+  if (e.dim == 1)
+    measure = std::sqrt(t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2]);
+  else if (e.dim == 2) {
+    const double n[3] = {t[0][1] * t[1][2] - t[0][2] * t[1][1],
+                         t[0][2] * t[1][0] - t[0][0] * t[1][2],
+                         t[0][0] * t[1][1] - t[0][1] * t[1][0]};
+    measure = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  }
+  return e.quadrature_weights[q] * measure;
+}
+
+void faceNormal(const double *x, int nv, int space, double n[3])
+{
+  n[0] = n[1] = n[2] = 0.0;
+  if (space == 2) {
+    n[0] = x[3] - x[1];
+    n[1] = -(x[2] - x[0]);
+    return;
+  }
+  for (int a = 0; a < nv; ++a) {
+    const double *p = &x[a * 3], *q = &x[((a + 1) % nv) * 3];
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+}
+
 void ReferenceElement::evaluate(const double xi[], double phi[], double dphi[]) const
 {
   if (simplex)

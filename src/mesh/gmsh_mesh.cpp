@@ -1,3 +1,5 @@
+#include "poroseam/collective_check.hpp"
+#include "poroseam/interfaces.hpp"
 #include "poroseam/mesh.hpp"
 #include "poroseam/reference_element.hpp"
 
@@ -159,9 +161,7 @@ PetscErrorCode checkCellOrientation(DM dm)
   for (PetscInt c = cStart; c < cEnd && !message[0]; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(dm, c, &ct));
-    if (DMPolytopeTypeGetDim(ct) != dim || ct == DM_POLYTOPE_SEG_PRISM_TENSOR ||
-        ct == DM_POLYTOPE_TRI_PRISM_TENSOR || ct == DM_POLYTOPE_QUAD_PRISM_TENSOR)
-      continue;
+    if (DMPolytopeTypeGetDim(ct) != dim || isCohesive(ct)) continue;
     if (!elements.count(ct)) PetscCall(ReferenceElement::create(ct, &elements[ct]));
     const ReferenceElement &e = elements[ct];
     PetscScalar *x = nullptr;
@@ -184,13 +184,7 @@ PetscErrorCode checkCellOrientation(DM dm)
     }
     PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
   }
-  // Every rank must stop together: share whether any rank found a bad cell.
-  int bad = message[0] != 0, anyBad = 0;
-  PetscCallMPI(MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_MAX, comm));
-  if (bad) {
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "poroseam: %s\n", message));
-  }
-  PetscCheck(!anyBad, comm, PETSC_ERR_USER_INPUT, "the mesh has an inverted element (see above)");
+  PetscCall(checkOnAllRanks(comm, message)); // every rank stops, with the bad cell named
   PetscFunctionReturn(0);
 }
 

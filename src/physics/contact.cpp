@@ -15,8 +15,10 @@ ContactResponse contactResponse(const ContactParameters &p, const ContactInitial
   // Normal: penalty from the initial state, no tension.
   const double pressure =
       initial.contact_pressure_effective - p.normal_stiffness * (gap_normal - initial.gap_normal);
-  if (pressure <= 0.0) {
+  if (pressure < 0.0) {
     // Open: no traction; the history keeps tau = 0 so that a new contact starts unstressed.
+    // At exactly zero pressure (touching) the interface counts as closed, with its
+    // stiffness: otherwise bodies that merely touch at the start would float.
     r.state = ContactState::open;
     return r;
   }

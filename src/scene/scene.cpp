@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <petscsys.h>
 #include <set>
 #include <sstream>
@@ -27,13 +29,34 @@ PetscErrorCode getStringList(const std::string &option, std::vector<std::string>
   PetscFunctionReturn(0);
 }
 
+/// Parses a number, accepting what PETSc accepts for reals (1e7, 2.5, -3); returns false
+/// for anything else so that the error can name the option.
+bool parseNumber(const std::string &text, double *value)
+{
+  const char *begin = text.c_str();
+  char *end = nullptr;
+  const double v = std::strtod(begin, &end);
+  while (end && (*end == ' ' || *end == '\t'))
+    ++end;
+  if (end == begin || !end || *end != '\0' || !std::isfinite(v)) return false;
+  *value = v;
+  return true;
+}
+
 PetscErrorCode getReal(const std::string &option, double *value, bool *set)
 {
+  char buffer[256];
   PetscBool found = PETSC_FALSE;
-  PetscReal v = 0.0;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetReal(nullptr, nullptr, option.c_str(), &v, &found));
-  if (found) *value = v;
+  PetscCall(
+      PetscOptionsGetString(nullptr, nullptr, option.c_str(), buffer, sizeof(buffer), &found));
+  if (found) {
+    double v;
+    PetscCheck(parseNumber(buffer, &v), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
+               "option %s %s: expected a number", option.c_str(),
+               buffer[0] ? buffer : "(no value)");
+    *value = v;
+  }
   if (set) *set = found;
   PetscFunctionReturn(0);
 }
@@ -63,12 +86,21 @@ PetscErrorCode getString(const std::string &option, std::string &value, bool *se
 
 PetscErrorCode getRealList(const std::string &option, std::vector<double> &values, bool *set)
 {
-  PetscReal v[3];
-  PetscInt n = 3;
-  PetscBool found = PETSC_FALSE;
+  std::string text;
+  bool found = false;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, option.c_str(), v, &n, &found));
-  values.assign(v, v + n);
+  PetscCall(getString(option, text, &found));
+  values.clear();
+  if (found) {
+    std::istringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+      double v;
+      PetscCheck(parseNumber(item, &v), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
+                 "option %s %s: expected comma-separated numbers", option.c_str(), text.c_str());
+      values.push_back(v);
+    }
+  }
   *set = found;
   PetscFunctionReturn(0);
 }
@@ -250,6 +282,51 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode readInterface(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
+                             const Scene &scene, Interface &i)
+{
+  const std::string p = "-interface_" + i.name + "_";
+  bool set = false;
+  PetscFunctionBeginUser;
+  PetscCall(getStringList(p + "surfaces", i.surfaces, &set));
+  if (!set) i.surfaces = {i.name};
+  for (const auto &surface : i.surfaces) {
+    int tag;
+    PetscCall(findPhysical(comm, names, dim - 1, surface, (p + "surfaces").c_str(),
+                           "interface surface", &tag));
+    i.tags.push_back(tag);
+  }
+  PetscCall(getString(p + "side1", i.side1, &set));
+  PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
+             "missing option %sside1: name the region on side 1 of interface '%s'", p.c_str(),
+             i.name.c_str());
+  bool known = false;
+  for (const auto &r : scene.regions)
+    if (r.name == i.side1) known = true, i.side1_tag = r.tag;
+  PetscCheck(known, comm, PETSC_ERR_USER_INPUT, "%sside1 %s: not a region listed in -regions",
+             p.c_str(), i.side1.c_str());
+  PetscCall(getRequiredReal(comm, p + "KN",
+                            "normal penalty stiffness K_N [Pa/m] of interface " + i.name,
+                            &i.normal_stiffness));
+  PetscCheck(i.normal_stiffness > 0.0, comm, PETSC_ERR_USER_INPUT, "%sKN = %g: must be > 0",
+             p.c_str(), i.normal_stiffness);
+  PetscCall(getRequiredReal(comm, p + "KT",
+                            "tangential penalty stiffness K_T [Pa/m] of interface " + i.name,
+                            &i.tangential_stiffness));
+  PetscCheck(i.tangential_stiffness > 0.0, comm, PETSC_ERR_USER_INPUT, "%sKT = %g: must be > 0",
+             p.c_str(), i.tangential_stiffness);
+  PetscCall(getRequiredReal(comm, p + "friction", "friction coefficient mu of interface " + i.name,
+                            &i.friction));
+  PetscCheck(i.friction >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sfriction = %g: must be >= 0",
+             p.c_str(), i.friction);
+  std::string rule = "gauss";
+  PetscCall(getString(p + "integration", rule, nullptr));
+  PetscCheck(rule == "gauss" || rule == "nodal", comm, PETSC_ERR_USER_INPUT,
+             "%sintegration %s: expected 'gauss' or 'nodal'", p.c_str(), rule.c_str());
+  i.nodal_integration = rule == "nodal";
+  PetscFunctionReturn(0);
+}
+
 /// Names used in options of the form -<prefix><name>_..., for spotting typos.
 std::set<std::string> optionsWithPrefix(const std::string &all, const std::string &prefix)
 {
@@ -274,6 +351,13 @@ PetscErrorCode checkOptionNames(MPI_Comm comm, const Scene &scene)
       known = known || opt.rfind("region_" + r.name + "_", 0) == 0;
     PetscCheck(known, comm, PETSC_ERR_USER_INPUT,
                "option -%s names a region that is not in -regions", opt.c_str());
+  }
+  for (const auto &opt : optionsWithPrefix(text, "interface_")) {
+    bool known = false;
+    for (const auto &i : scene.interfaces)
+      known = known || opt.rfind("interface_" + i.name + "_", 0) == 0;
+    PetscCheck(known, comm, PETSC_ERR_USER_INPUT,
+               "option -%s names an interface that is not in -interfaces", opt.c_str());
   }
   for (const auto &opt : optionsWithPrefix(text, "bc_")) {
     bool known = false;
@@ -398,12 +482,20 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   scene.conditions.clear();
   for (const auto &b : scene.boundaries)
     PetscCall(readBoundary(comm, scene, b, scene.conditions));
+  PetscCall(getStringList("-interfaces", list, &set));
+  scene.interfaces.clear();
+  for (const auto &name : list) {
+    Interface i;
+    i.name = name;
+    PetscCall(readInterface(comm, names, dim, scene, i));
+    scene.interfaces.push_back(i);
+  }
   PetscCall(checkOptionNames(comm, scene));
 
-  PetscInt every = scene.output_every;
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-output_fields_every", &every, nullptr));
-  PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT, "-output_fields_every %d: must be >= 0",
-             (int)every);
+  double every = scene.output_every;
+  PetscCall(getReal("-output_fields_every", &every, nullptr));
+  PetscCheck(every >= 0 && every == std::floor(every), comm, PETSC_ERR_USER_INPUT,
+             "-output_fields_every %g: expected a whole number >= 0", every);
   scene.output_every = (int)every;
   scene.probes.clear();
   PetscCall(readProbes(comm, scene));

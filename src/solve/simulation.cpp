@@ -1,6 +1,7 @@
 #include "poroseam/simulation.hpp"
 
 #include "poroseam/field_writer.hpp"
+#include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/mesh.hpp"
 #include "poroseam/nullspace.hpp"
@@ -40,8 +41,8 @@ struct Run {
   PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
   double step_start = 0.0;
   int step = 0;
-  double residual_scale = 0.0;   ///< largest initial Newton residual of the run
-  double reference_rtol = 1e-11; ///< -snes_reference_rtol
+  double residual_scale = 0.0;  ///< largest initial Newton residual of the run
+  double reference_rtol = 1e-9; ///< -snes_reference_rtol
 };
 
 PetscErrorCode currentDt(Run &run, double *dt)
@@ -74,7 +75,8 @@ PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f,
     PetscCall(TSGetSNES(run.ts, &snes));
     PetscCall(SNESSetFunctionDomainError(snes));
   }
-  PetscCall(run.problem.residual(t, local, local_rate, ResidualMode{-dt, true}, f));
+  const double mass_scale = -dt * run.problem.massBalanceScale();
+  PetscCall(run.problem.residual(t, local, local_rate, ResidualMode{mass_scale, true}, f));
   PetscFunctionReturn(0);
 }
 
@@ -85,7 +87,8 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   double dt;
   PetscFunctionBeginUser;
   PetscCall(currentDt(run, &dt));
-  PetscCall(run.problem.jacobian(t, shift, local, local_rate, -dt, P));
+  PetscCall(
+      run.problem.jacobian(t, shift, local, local_rate, -dt * run.problem.massBalanceScale(), P));
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -93,8 +96,9 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   PetscFunctionReturn(0);
 }
 
-/// PETSc's default test, plus: converged when the residual is below reference_rtol times the
-/// largest initial residual of the run. A step that starts close to equilibrium (slow
+/// PETSc's default test, plus: converged when the residual is below reference_rtol times a
+/// force scale: the gross residual of the zero state (weight, initial stresses) or the largest
+/// initial residual of the run, whichever is larger. A step that starts close to equilibrium (slow
 /// consolidation, small increments) cannot reach rtol relative to its own tiny initial
 /// residual: round-off of the force rows stops it first.
 PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
@@ -105,7 +109,9 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
   const double scale = run.residual_scale;
   if (it == 0) run.residual_scale = std::max(run.residual_scale, (double)fnorm);
-  if (*reason == SNES_CONVERGED_ITERATING && scale > 0.0 && fnorm <= run.reference_rtol * scale)
+  // At least one Newton update per step before this test applies.
+  if (*reason == SNES_CONVERGED_ITERATING && it > 0 && scale > 0.0 &&
+      fnorm <= run.reference_rtol * scale)
     *reason = SNES_CONVERGED_FNORM_ABS;
   PetscFunctionReturn(0);
 }
@@ -175,6 +181,34 @@ PetscErrorCode boundaryResultants(Run &run, double t, Vec local, Vec rate, std::
   PetscFunctionReturn(0);
 }
 
+/// Force on side 1 from side 2 of every interface [N, per m in 2D], then of each of its
+/// surfaces when it has several.
+PetscErrorCode interfaceForces(Run &run, Vec local, std::vector<double> &out)
+{
+  const int dim = run.scene.dim;
+  std::vector<size_t> first;
+  size_t count = 0;
+  for (const auto &i : run.scene.interfaces) {
+    first.push_back(count);
+    count += dim * (1 + (i.surfaces.size() > 1 ? i.surfaces.size() : 0));
+  }
+  std::vector<double> mine(count, 0.0);
+  PetscFunctionBeginUser;
+  PetscCall(run.problem.interfaces().visit(
+      local, [&](int iface, int surface, PetscInt, const InterfacePointState &st) {
+        const size_t base = first[iface];
+        for (int d = 0; d < dim; ++d) {
+          mine[base + d] += st.weight * st.traction[d];
+          if (run.scene.interfaces[iface].surfaces.size() > 1)
+            mine[base + dim * (1 + surface) + d] += st.weight * st.traction[d];
+        }
+      }));
+  out.assign(count, 0.0);
+  PetscCallMPI(MPI_Allreduce(mine.data(), out.data(), (int)count, MPI_DOUBLE, MPI_SUM,
+                             PetscObjectComm((PetscObject)run.dm)));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode openTimeSeries(Run &run)
 {
   PetscMPIInt rank;
@@ -205,9 +239,10 @@ PetscErrorCode openTimeSeries(Run &run)
 PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
                           PetscInt ksp, PetscInt rejected, double wall)
 {
-  std::vector<double> resultants, probes;
+  std::vector<double> resultants, probes, interface_forces;
   PetscFunctionBeginUser;
   PetscCall(boundaryResultants(run, t, local, rate, resultants));
+  PetscCall(interfaceForces(run, local, interface_forces));
   PetscCall(run.probes.evaluate(local, probes));
   if (run.csv) {
     const int dim = run.scene.dim;
@@ -265,6 +300,7 @@ PetscErrorCode postStep(TS ts)
                         "%.2f s\n",
                         run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)krylov,
                         rejected ? "  (cut back)" : "", wall));
+  PetscCall(run.problem.commit(local)); // only accepted steps reach here
   PetscCall(VecCopy(local, run.previous));
   PetscCall(DMRestoreLocalVector(run.dm, &rate));
   PetscCall(DMRestoreLocalVector(run.dm, &local));
@@ -337,6 +373,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(loadGmshMesh(comm, run.scene.mesh_file, run.scene.mesh_size_factor,
                          run.scene.output_dir + "/mesh", &run.dm, &names, &dim));
   PetscCall(readSceneOptions(comm, names, dim, run.scene));
+  PetscCall(splitInterfaces(&run.dm, run.scene));
   PetscCall(markLayoutLabels(run.dm, run.scene));
   PetscCall(distributeMesh(&run.dm));
   PetscCall(checkCellOrientation(run.dm));
@@ -391,6 +428,24 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCheck(run.nominal_dt > 0.0, comm, PETSC_ERR_USER_INPUT, "-ts_dt %g: must be > 0",
              run.nominal_dt);
 
+  {
+    // Force scale for the convergence test: the residual of the zero state at t = 0, where
+    // weight and initial stresses appear without the pore pressure that balances them.
+    Vec zero, f, F;
+    PetscCall(DMGetLocalVector(run.dm, &zero));
+    PetscCall(DMGetLocalVector(run.dm, &f));
+    PetscCall(DMGetGlobalVector(run.dm, &F));
+    PetscCall(VecSet(zero, 0.0));
+    PetscCall(run.problem.residual(0.0, zero, zero, ResidualMode{1.0, true}, f));
+    PetscCall(VecSet(F, 0.0));
+    PetscCall(DMLocalToGlobal(run.dm, f, ADD_VALUES, F));
+    PetscReal norm;
+    PetscCall(VecNorm(F, NORM_2, &norm));
+    run.residual_scale = norm;
+    PetscCall(DMRestoreGlobalVector(run.dm, &F));
+    PetscCall(DMRestoreLocalVector(run.dm, &f));
+    PetscCall(DMRestoreLocalVector(run.dm, &zero));
+  }
   PetscCall(openTimeSeries(run));
   if (run.scene.output_every > 0)
     PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields"));

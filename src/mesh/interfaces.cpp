@@ -1,0 +1,228 @@
+#include "poroseam/interfaces.hpp"
+
+#include "poroseam/collective_check.hpp"
+#include "poroseam/reference_element.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace poroseam {
+
+bool isCohesive(DMPolytopeType t)
+{
+  return t == DM_POLYTOPE_POINT_PRISM_TENSOR || t == DM_POLYTOPE_SEG_PRISM_TENSOR ||
+         t == DM_POLYTOPE_TRI_PRISM_TENSOR || t == DM_POLYTOPE_QUAD_PRISM_TENSOR;
+}
+
+namespace {
+
+PetscErrorCode closureCoordinates(DM dm, PetscInt point, std::vector<double> &x)
+{
+  Vec coords;
+  PetscSection csec;
+  PetscScalar *values = nullptr;
+  PetscInt n = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(DMPlexVecGetClosure(dm, csec, coords, point, &n, &values));
+  x.assign(values, values + n);
+  PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, point, &n, &values));
+  PetscFunctionReturn(0);
+}
+
+void centroid(const std::vector<double> &x, int dim, double c[3])
+{
+  const int nv = (int)x.size() / dim;
+  c[0] = c[1] = c[2] = 0.0;
+  for (int a = 0; a < nv; ++a)
+    for (int d = 0; d < dim; ++d)
+      c[d] += x[a * dim + d] / nv;
+}
+
+/// Bulk cell on the other side of a face from the cohesive cell.
+PetscErrorCode bulkNeighbour(DM dm, PetscInt face, PetscInt *cell)
+{
+  const PetscInt *support;
+  PetscInt size;
+  PetscFunctionBeginUser;
+  *cell = -1;
+  PetscCall(DMPlexGetSupportSize(dm, face, &size));
+  PetscCall(DMPlexGetSupport(dm, face, &support));
+  for (PetscInt i = 0; i < size; ++i) {
+    DMPolytopeType t;
+    PetscCall(DMPlexGetCellType(dm, support[i], &t));
+    if (!isCohesive(t)) *cell = support[i];
+  }
+  PetscFunctionReturn(0);
+}
+
+/// Tips of interfaces that end inside the mesh: the rim of the interface (points of
+/// dimension dim - 2 that bound only one interface face: vertices in 2D, edges in 3D), where
+/// not on the boundary of the mesh, completed with their vertices.
+PetscErrorCode markBuriedTips(DM dm, DMLabel faces, DMLabel buried)
+{
+  PetscInt dim;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  DMLabel meshBoundary;
+  PetscCall(DMLabelCreate(PETSC_COMM_SELF, "mesh boundary", &meshBoundary));
+  PetscCall(DMPlexMarkBoundaryFaces(dm, 1, meshBoundary));
+  PetscCall(DMPlexLabelComplete(dm, meshBoundary));
+  PetscInt rStart, rEnd, fStart, fEnd;
+  PetscCall(DMPlexGetDepthStratum(dm, dim - 2, &rStart, &rEnd));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
+  std::map<PetscInt, int> count;
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    PetscInt marked;
+    PetscCall(DMLabelGetValue(faces, f, &marked));
+    if (marked != 1) continue;
+    PetscInt n, *pts = nullptr;
+    PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &n, &pts));
+    for (PetscInt i = 0; i < n; ++i)
+      if (pts[2 * i] >= rStart && pts[2 * i] < rEnd) ++count[pts[2 * i]];
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &n, &pts));
+  }
+  for (const auto &[point, n] : count) {
+    PetscInt onBoundary;
+    PetscCall(DMLabelGetValue(meshBoundary, point, &onBoundary));
+    if (n == 1 && onBoundary != 1) PetscCall(DMLabelSetValue(buried, point, 1));
+  }
+  PetscCall(DMPlexLabelComplete(dm, buried));
+  PetscCall(DMLabelDestroy(&meshBoundary));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
+{
+  PetscInt dim;
+  MPI_Comm comm;
+  PetscFunctionBeginUser;
+  if (scene.interfaces.empty()) PetscFunctionReturn(0);
+  PetscCall(PetscObjectGetComm((PetscObject)*dm, &comm));
+  PetscCall(DMGetDimension(*dm, &dim));
+  DMLabel faceSets;
+  PetscCall(DMGetLabel(*dm, "Face Sets", &faceSets));
+  PetscCheck(faceSets, comm, PETSC_ERR_USER_INPUT, "the mesh has no face groups to split along");
+
+  // Interface faces, marked with value 1 and completed to their closure.
+  DMLabel faces;
+  PetscCall(DMLabelCreate(PETSC_COMM_SELF, "interface faces", &faces));
+  std::map<int, std::pair<int, int>> surfaceOfTag; // tag -> (interface, surface)
+  for (size_t i = 0; i < scene.interfaces.size(); ++i)
+    for (size_t s = 0; s < scene.interfaces[i].tags.size(); ++s) {
+      surfaceOfTag[scene.interfaces[i].tags[s]] = {(int)i, (int)s};
+      IS is = nullptr;
+      PetscCall(DMLabelGetStratumIS(faceSets, scene.interfaces[i].tags[s], &is));
+      if (!is) continue;
+      const PetscInt *idx;
+      PetscInt n;
+      PetscCall(ISGetLocalSize(is, &n));
+      PetscCall(ISGetIndices(is, &idx));
+      for (PetscInt k = 0; k < n; ++k)
+        PetscCall(DMLabelSetValue(faces, idx[k], 1));
+      PetscCall(ISRestoreIndices(is, &idx));
+      PetscCall(ISDestroy(&is));
+    }
+  PetscCall(DMPlexLabelComplete(*dm, faces));
+
+  // The sequence of DMPlexCreateHybridMesh, with faces marked explicitly (finding them from
+  // vertices picks wrong faces in thin parts; see shared/notes/petsc-3.18.md).
+  DM sub;
+  PetscCall(DMPlexCreateSubmesh(*dm, faces, 1, PETSC_TRUE, &sub));
+  PetscCall(DMPlexOrient(sub));
+  DMLabel subpointMap, split, buried;
+  PetscCall(DMPlexGetSubpointMap(sub, &subpointMap));
+  PetscCall(DMLabelDuplicate(subpointMap, &split));
+  PetscCall(DMLabelClearStratum(split, dim));
+  PetscCall(DMLabelCreate(PETSC_COMM_SELF, "buried tips", &buried));
+  PetscCall(markBuriedTips(*dm, faces, buried));
+  PetscInt tips = 0;
+  PetscCall(DMLabelGetStratumSize(buried, 1, &tips));
+  // PETSc 3.18 dereferences an empty buried-tip stratum: pass no label when there are no tips.
+  PetscCall(DMPlexLabelCohesiveComplete(*dm, split, tips ? buried : nullptr, 1, PETSC_FALSE, sub));
+  DM dmSplit;
+  PetscCall(DMPlexConstructCohesiveCells(*dm, split, nullptr, &dmSplit));
+  {
+    DM cdm;
+    DMLabel ctLabel;
+    PetscCall(DMGetCoordinateDM(dmSplit, &cdm));
+    PetscCall(DMPlexGetCellTypeLabel(dmSplit, &ctLabel));
+    PetscCall(DMSetLabel(cdm, ctLabel));
+  }
+  PetscCall(DMLabelDestroy(&split));
+  PetscCall(DMLabelDestroy(&buried));
+  PetscCall(DMLabelDestroy(&faces));
+  PetscCall(DMDestroy(&sub));
+  PetscCall(DMDestroy(dm));
+  *dm = dmSplit;
+  PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
+
+  // Labels of the cohesive cells: interface, surface, side 1 and normal orientation.
+  DMLabel cellSets, iface, surface, side, normal;
+  PetscCall(DMGetLabel(*dm, "Cell Sets", &cellSets));
+  PetscCall(DMGetLabel(*dm, "Face Sets", &faceSets));
+  for (const char *name :
+       {kInterfaceLabel, kInterfaceSurfaceLabel, kInterfaceSideLabel, kInterfaceNormalLabel})
+    PetscCall(DMCreateLabel(*dm, name));
+  PetscCall(DMGetLabel(*dm, kInterfaceLabel, &iface));
+  PetscCall(DMGetLabel(*dm, kInterfaceSurfaceLabel, &surface));
+  PetscCall(DMGetLabel(*dm, kInterfaceSideLabel, &side));
+  PetscCall(DMGetLabel(*dm, kInterfaceNormalLabel, &normal));
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(*dm, 0, &cStart, &cEnd));
+  std::string error;
+  for (PetscInt c = cStart; c < cEnd && error.empty(); ++c) {
+    DMPolytopeType t;
+    PetscCall(DMPlexGetCellType(*dm, c, &t));
+    if (!isCohesive(t)) continue;
+    const PetscInt *cone;
+    PetscCall(DMPlexGetCone(*dm, c, &cone));
+    PetscInt tag = -1;
+    PetscCall(DMLabelGetValue(faceSets, cone[0], &tag));
+    if (tag < 0) PetscCall(DMLabelGetValue(faceSets, cone[1], &tag));
+    const auto found = surfaceOfTag.find((int)tag);
+    if (found == surfaceOfTag.end()) {
+      error = "a cohesive cell has no interface face group (internal error in the split)";
+      break;
+    }
+    const Interface &in = scene.interfaces[found->second.first];
+    PetscInt neighbour[2], region[2] = {-1, -1};
+    for (int s = 0; s < 2; ++s) {
+      PetscCall(bulkNeighbour(*dm, cone[s], &neighbour[s]));
+      if (neighbour[s] >= 0) PetscCall(DMLabelGetValue(cellSets, neighbour[s], &region[s]));
+    }
+    int sideFace = region[0] == in.side1_tag ? 0 : region[1] == in.side1_tag ? 1 : -1;
+    if (sideFace < 0) {
+      std::ostringstream msg;
+      msg << "interface '" << in.name << "': -interface_" << in.name << "_side1 " << in.side1
+          << " is on neither side of its face group '" << in.surfaces[found->second.second]
+          << "' (the regions there have tags " << region[0] << " and " << region[1] << ")";
+      error = msg.str();
+      break;
+    }
+    // Orientation of cone[0]'s natural normal relative to side 1 -> side 2.
+    std::vector<double> fx, cx;
+    PetscCall(closureCoordinates(*dm, cone[0], fx));
+    PetscCall(closureCoordinates(*dm, neighbour[sideFace], cx));
+    double n[3], fc[3], cc[3];
+    faceNormal(fx.data(), (int)fx.size() / (int)dim, (int)dim, n);
+    centroid(fx, (int)dim, fc);
+    centroid(cx, (int)dim, cc);
+    double dot = 0.0;
+    for (int d = 0; d < dim; ++d)
+      dot += n[d] * (fc[d] - cc[d]);
+    PetscCall(DMLabelSetValue(iface, c, found->second.first + 1));
+    PetscCall(DMLabelSetValue(surface, c, found->second.second + 1));
+    PetscCall(DMLabelSetValue(side, c, sideFace + 1));
+    PetscCall(DMLabelSetValue(normal, c, dot > 0.0 ? 1 : 2));
+  }
+  PetscCall(checkOnAllRanks(comm, error));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam

@@ -1,0 +1,131 @@
+#!/usr/bin/python3
+"""The solver presets options/solvers/{direct,fieldsplit}.opts give the direct solution
+(label "solvers").
+
+    solver_presets.py --case terzaghi_2d | two_regions_2d  [--ranks N] [--rtol 1e-6]
+
+Runs the scene (its own solver options: MUMPS LU) as the reference, then the scene followed by
+`-options_file options/solvers/<preset>.opts` for each preset, on --ranks ranks, and checks
+  - the run completes with no rejected (cut) step,
+  - every timeseries.csv column except the counters (newton_its, ksp_its, rejected) and
+    wall_time agrees with the reference to rtol, relative to the column's largest magnitude
+    floored at 1e-3 of the largest magnitude of its quantity (forces, fluxes, probe
+    displacements, probe pressures; see mpi_match.py): a column that is round-off in the
+    direct solve (the flux through an impervious boundary, 1e-20 m3/s next to 2e-5 m3/s
+    through the drained top) may carry 1e-9 of the quantity's scale from an iterative solve
+    (-ksp_rtol 1e-10),
+  - the fields (displacement, pressure) agree to rtol relative to the field's largest magnitude.
+Prints the Krylov iterations per time step (mean, min, max) of each preset.
+"""
+
+import argparse
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.environ.get("POROSEAM_SOURCE", os.path.dirname(os.path.dirname(HERE)))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(SOURCE, "tests", "verification"))
+sys.path.insert(0, os.path.join(SOURCE, "tests", "support"))
+import common  # noqa: E402
+from fields_reader import read_fields  # noqa: E402
+from mpi_match import compare_fields, quantity, read_csv  # noqa: E402
+
+CASES = {
+    "terzaghi_2d": dict(scene="tests/verification/terzaghi_2d.opts",
+                        args=["-probe_p50", "0.05,0.5", "-probe_top", "0.1,1",
+                              "-output_fields_every", "25"]),
+    "two_regions_2d": dict(scene="options/two_regions_2d.opts",
+                           args=["-output_fields_every", "10"]),
+    # the Terzaghi column made elastic: no pressure field, the fieldsplit preset must still
+    # work (its -fieldsplit_pressure_* options are then reported as unused)
+    "elastic_2d": dict(scene="tests/verification/terzaghi_2d.opts", elastic=True,
+                       args=["-probe_top", "0.1,1", "-ts_max_steps", "5", "-output_fields_every", "1"]),
+}
+
+
+def elastic_scene(path, out_dir):
+    """A copy of the scene with every biot region made elastic (pressure options dropped)."""
+    new = os.path.join(out_dir, "elastic.opts")
+    with open(path) as f, open(new, "w") as g:
+        for line in f:
+            words = line.split("#", 1)[0].split()
+            if words and (words[0].endswith("_permeability") or words[0].endswith("_p")):
+                continue
+            if words and words[0].endswith("_material"):
+                line = words[0] + " elastic\n"
+            g.write(line)
+    return new
+PRESETS = ["direct", "fieldsplit"]
+SKIP = ["wall_time", "newton_its", "ksp_its", "rejected"]
+
+
+def compare_timeseries(checks, label, ref, run, rtol):
+    h1, d1 = ref
+    h2, d2 = run
+    if h1 != h2 or d1.shape != d2.shape:
+        checks.check(f"{label}: same timeseries columns and rows", 1, 0)
+        return
+    group_max = {}
+    for i, name in enumerate(h1):
+        if name not in SKIP and np.any(np.isfinite(d1[:, i])):
+            group_max[quantity(name)] = max(group_max.get(quantity(name), 0.0),
+                                            np.nanmax(np.abs(d1[:, i])))
+    worst, worst_name = 0.0, ""
+    for i, name in enumerate(h1):
+        if name in SKIP:
+            continue
+        x, y = d1[:, i], d2[:, i]
+        if np.any(np.isnan(x) != np.isnan(y)):
+            checks.check(f"{label}: {name} NaN in one run only", 1, 0)
+            continue
+        ok = np.isfinite(x)
+        if not np.any(ok):
+            continue
+        ref_mag = max(np.max(np.abs(x[ok])), 1e-3 * group_max.get(quantity(name), 0.0))
+        if ref_mag == 0.0:
+            continue
+        rel = np.max(np.abs(x[ok] - y[ok])) / ref_mag
+        if rel > rtol:
+            checks.check(f"{label}: timeseries {name} relative difference", rel, rtol)
+        if rel >= worst:
+            worst, worst_name = rel, name
+    checks.check(f"{label}: timeseries largest relative difference ({worst_name})", worst, rtol)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--case", required=True, choices=sorted(CASES))
+    ap.add_argument("--ranks", type=int, default=1)
+    ap.add_argument("--rtol", type=float, default=1e-6)
+    a = ap.parse_args()
+    case = CASES[a.case]
+    scene = os.path.join(SOURCE, case["scene"])
+    ref_dir = common.output_dir(f"solvers_{a.case}_np{a.ranks}_reference")
+    if case.get("elastic"):
+        scene = elastic_scene(scene, ref_dir)
+    common.run(scene, ref_dir, case["args"], ranks=a.ranks, timeout=120)
+    ref = read_csv(ref_dir)
+    checks = common.Checks(f"solver presets on {a.case}, {a.ranks} rank(s), vs the scene's MUMPS LU")
+    for preset in PRESETS:
+        d = common.output_dir(f"solvers_{a.case}_np{a.ranks}_{preset}")
+        opts = os.path.join(SOURCE, "options", "solvers", preset + ".opts")
+        common.run(scene, d, case["args"] + ["-options_file", opts], ranks=a.ranks, timeout=120)
+        run = read_csv(d)
+        h = run[0]
+        its = run[1][1:, h.index("ksp_its")]  # row 0 is the initial state
+        rejected = run[1][1:, h.index("rejected")]
+        print(f"  {preset}: Krylov iterations per step: mean {its.mean():.1f}, min {its.min():.0f}, "
+              f"max {its.max():.0f} over {len(its)} steps; Newton per step max "
+              f"{run[1][1:, h.index('newton_its')].max():.0f}", flush=True)
+        checks.check(f"{preset}: rejected (cut) steps", rejected.sum(), 0)
+        compare_timeseries(checks, preset, ref, run, a.rtol)
+        compare_fields(checks, preset, read_fields(ref_dir), read_fields(d), a.rtol,
+                       names=("displacement", "pressure"))
+    checks.finish()
+
+
+if __name__ == "__main__":
+    main()
