@@ -1,0 +1,519 @@
+// Bulk field output: HDF5 (through PETSc's HDF5 viewer) plus an XDMF index for ParaView.
+//
+// HDF5 layout of <dir>/<basename>.h5 (global vertex numbering: owned vertices of rank 0 first,
+// then rank 1, ...; the same order in the geometry and in every field):
+//   /geometry/vertices              [Nv, cdim]  double   vertex coordinates
+//   /topology/cells                 [Nc, nc]    PetscInt connectivity (0-based, XDMF order)
+//   /fields/displacement/<step>     [Nv, 3]     double   (padded with zeros when dim < 3)
+//   /fields/pressure/<step>         [Nv]        double   (only when the section has pressure)
+//   /fields/excess_pressure/<step>  [Nv]        double   (pressure - initial pressure)
+// Every field dataset carries an attribute "time". The XDMF file is rewritten by rank 0 after
+// every write() (to a temporary file that is then renamed), so a crashed run still leaves a
+// readable time series.
+#include "poroseam/field_writer.hpp"
+
+#include <petscdmplex.h>
+#include <petscsf.h>
+#include <petscviewerhdf5.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace poroseam {
+
+namespace {
+
+// XDMF name and vertex count of a bulk cell type; nullptr for types that are not written.
+const char *xdmfTopologyName(DMPolytopeType ct, PetscInt *corners)
+{
+  switch (ct) {
+  case DM_POLYTOPE_TRIANGLE:
+    *corners = 3;
+    return "Triangle";
+  case DM_POLYTOPE_QUADRILATERAL:
+    *corners = 4;
+    return "Quadrilateral";
+  case DM_POLYTOPE_TETRAHEDRON:
+    *corners = 4;
+    return "Tetrahedron";
+  case DM_POLYTOPE_HEXAHEDRON:
+    *corners = 8;
+    return "Hexahedron";
+  default:
+    *corners = 0;
+    return nullptr;
+  }
+}
+
+// Converts the vertices of a cell from DMPlex closure order to XDMF/VTK order (in place).
+// DMPlex reference cells (DMPlexCreateReferenceCell): triangle and quadrilateral are
+// counterclockwise (same as VTK); the tetrahedron (-1,-1,-1),(-1,1,-1),(1,-1,-1),(-1,-1,1) has
+// negative VTK orientation (swap 0 and 1); the hexahedron lists the bottom face clockwise seen
+// from above, (-1,-1,-1),(-1,1,-1),(1,1,-1),(1,-1,-1), then the top face counterclockwise
+// (-1,-1,1),(1,-1,1),(1,1,1),(-1,1,1) (swap 1 and 3). This is DMPlexInvertCell().
+void closureToXdmfOrder(DMPolytopeType ct, PetscInt *v)
+{
+  switch (ct) {
+  case DM_POLYTOPE_TETRAHEDRON:
+    std::swap(v[0], v[1]);
+    break;
+  case DM_POLYTOPE_HEXAHEDRON:
+    std::swap(v[1], v[3]);
+    break;
+  default:
+    break;
+  }
+}
+
+PetscErrorCode findField(PetscSection section, const char *name, PetscInt *field)
+{
+  PetscInt nf;
+
+  PetscFunctionBeginUser;
+  *field = -1;
+  PetscCall(PetscSectionGetNumFields(section, &nf));
+  for (PetscInt f = 0; f < nf; ++f) {
+    const char *fname = nullptr;
+    PetscBool match = PETSC_FALSE;
+
+    PetscCall(PetscSectionGetFieldName(section, f, &fname));
+    if (fname) PetscCall(PetscStrcmp(fname, name, &match));
+    if (match) {
+      *field = f;
+      break;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+std::string formatDouble(double x)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.17g", x);
+  return buf;
+}
+
+} // namespace
+
+struct FieldWriter::Impl {
+  MPI_Comm comm = MPI_COMM_NULL;
+  DM dm = nullptr;
+  PetscViewer viewer = nullptr;
+  std::string h5name; // file name relative to the XDMF file
+  std::string xmfPath;
+  PetscInt dim = 0;  // topological dimension
+  PetscInt cdim = 0; // coordinate dimension
+  DMPolytopeType cellType = DM_POLYTOPE_UNKNOWN;
+  PetscInt corners = 0;
+  PetscInt numCells = 0;    // global number of written cells
+  PetscInt numVertices = 0; // global number of written vertices
+  PetscInt dispField = -1;
+  PetscInt presField = -1;
+  PetscInt dispComp = 0;
+  std::vector<PetscInt> ownedVertices; // local vertex points, in global output order
+  std::vector<double> times;
+
+  PetscErrorCode writeXdmf();
+  PetscErrorCode writeVertexVec(const char *group, const std::string &name, PetscInt bs,
+                                const std::vector<PetscScalar> &values, double time, bool withTime);
+};
+
+PetscErrorCode FieldWriter::Impl::writeVertexVec(const char *group, const std::string &name,
+                                                 PetscInt bs,
+                                                 const std::vector<PetscScalar> &values,
+                                                 double time, bool withTime)
+{
+  Vec v;
+  PetscScalar *a;
+  const PetscInt n = static_cast<PetscInt>(ownedVertices.size()) * bs;
+
+  PetscFunctionBeginUser;
+  PetscCheck(static_cast<PetscInt>(values.size()) == n, comm, PETSC_ERR_PLIB,
+             "FieldWriter: wrong number of values for %s", name.c_str());
+  PetscCall(VecCreate(comm, &v));
+  PetscCall(VecSetSizes(v, n, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(v, bs));
+  PetscCall(VecSetType(v, VECMPI));
+  PetscCall(PetscObjectSetName((PetscObject)v, name.c_str()));
+  PetscCall(VecGetArray(v, &a));
+  std::copy(values.begin(), values.end(), a);
+  PetscCall(VecRestoreArray(v, &a));
+  PetscCall(PetscViewerHDF5PushGroup(viewer, group));
+  PetscCall(VecView(v, viewer));
+  PetscCall(PetscViewerHDF5PopGroup(viewer));
+  if (withTime) {
+    const std::string path = std::string(group) + "/" + name;
+    PetscReal t = static_cast<PetscReal>(time);
+
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, path.c_str(), "time", PETSC_REAL, &t));
+  }
+  PetscCall(VecDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::Impl::writeXdmf()
+{
+  PetscMPIInt rank;
+  int ok = 1;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    PetscInt dummy;
+    const char *topo = xdmfTopologyName(cellType, &dummy);
+    const std::string intPrec = std::to_string(sizeof(PetscInt));
+    const std::string nv = std::to_string(numVertices);
+    std::ostringstream x;
+
+    auto topologyAndGeometry = [&](std::ostringstream &o) {
+      o << "        <Topology TopologyType=\"" << topo << "\" NumberOfElements=\"" << numCells
+        << "\" NodesPerElement=\"" << corners << "\">\n"
+        << "          <DataItem Dimensions=\"" << numCells << " " << corners
+        << "\" NumberType=\"Int\" Precision=\"" << intPrec << "\" Format=\"HDF\">" << h5name
+        << ":/topology/cells</DataItem>\n"
+        << "        </Topology>\n"
+        << "        <Geometry GeometryType=\"" << (cdim == 3 ? "XYZ" : "XY") << "\">\n"
+        << "          <DataItem Dimensions=\"" << nv << " " << cdim
+        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5name
+        << ":/geometry/vertices</DataItem>\n"
+        << "        </Geometry>\n";
+    };
+    auto attribute = [&](std::ostringstream &o, const char *name, bool vector, size_t step) {
+      o << "        <Attribute Name=\"" << name << "\" AttributeType=\""
+        << (vector ? "Vector" : "Scalar") << "\" Center=\"Node\">\n"
+        << "          <DataItem Dimensions=\"" << nv << (vector ? " 3" : "")
+        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5name << ":/fields/"
+        << name << "/" << step << "</DataItem>\n"
+        << "        </Attribute>\n";
+    };
+
+    x << "<?xml version=\"1.0\" ?>\n"
+      << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      << "<Xdmf Version=\"3.0\">\n"
+      << "  <Domain>\n"
+      << "    <Grid Name=\"TimeSeries\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    if (times.empty()) {
+      // No time written yet: the mesh alone, so that the file is still valid.
+      x << "      <Grid Name=\"mesh\" GridType=\"Uniform\">\n";
+      topologyAndGeometry(x);
+      x << "      </Grid>\n";
+    }
+    for (size_t s = 0; s < times.size(); ++s) {
+      x << "      <Grid Name=\"mesh\" GridType=\"Uniform\">\n"
+        << "        <Time Value=\"" << formatDouble(times[s]) << "\" />\n";
+      topologyAndGeometry(x);
+      attribute(x, "displacement", true, s);
+      if (presField >= 0) {
+        attribute(x, "pressure", false, s);
+        attribute(x, "excess_pressure", false, s);
+      }
+      x << "      </Grid>\n";
+    }
+    x << "    </Grid>\n"
+      << "  </Domain>\n"
+      << "</Xdmf>\n";
+
+    const std::string tmp = xmfPath + ".tmp";
+    {
+      std::ofstream out(tmp, std::ios::trunc);
+      out << x.str();
+      out.close();
+      if (!out) ok = 0;
+    }
+    if (ok) {
+      std::error_code ec;
+      std::filesystem::rename(tmp, xmfPath, ec);
+      if (ec) ok = 0;
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "FieldWriter: cannot write %s", xmfPath.c_str());
+  PetscFunctionReturn(0);
+}
+
+FieldWriter::~FieldWriter()
+{
+  if (impl_) {
+    // Errors cannot propagate from a destructor; close() is expected to be called explicitly.
+    if (impl_->viewer) (void)close();
+    delete impl_;
+    impl_ = nullptr;
+  }
+}
+
+PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
+                                 const std::string &basename)
+{
+  MPI_Comm comm;
+  PetscMPIInt rank;
+  PetscSection section;
+  PetscInt pStart, pEnd, vStart, vEnd, cStart, cEnd, cellHeight;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)solution_dm, &comm));
+  PetscCheck(!impl_ || !impl_->viewer, comm, PETSC_ERR_ARG_WRONGSTATE,
+             "FieldWriter::open called twice");
+  PetscCheck(!basename.empty(), comm, PETSC_ERR_ARG_WRONG, "FieldWriter: empty basename");
+  delete impl_;
+  impl_ = new Impl;
+  Impl &im = *impl_;
+  im.comm = comm;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+
+  // Output directory (rank 0 creates it).
+  {
+    int ok = 1;
+    if (rank == 0 && !dir.empty()) {
+      std::error_code ec;
+      std::filesystem::create_directories(dir, ec);
+      if (ec) ok = 0;
+    }
+    PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+    PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "FieldWriter: cannot create directory %s",
+               dir.c_str());
+  }
+  const std::string prefix = dir.empty() ? basename : dir + "/" + basename;
+  im.h5name = basename + ".h5";
+  im.xmfPath = prefix + ".xmf";
+
+  PetscCall(PetscObjectReference((PetscObject)solution_dm));
+  im.dm = solution_dm;
+  PetscCall(DMGetDimension(im.dm, &im.dim));
+  PetscCall(DMGetCoordinateDim(im.dm, &im.cdim));
+  PetscCheck(im.cdim == 2 || im.cdim == 3, comm, PETSC_ERR_SUP,
+             "FieldWriter: coordinate dimension %" PetscInt_FMT " not supported", im.cdim);
+
+  // Fields of the local section.
+  PetscCall(DMGetLocalSection(im.dm, &section));
+  PetscCheck(section, comm, PETSC_ERR_ARG_WRONGSTATE, "FieldWriter: the DM has no local section");
+  {
+    PetscInt nf;
+    PetscCall(PetscSectionGetNumFields(section, &nf));
+    PetscCall(findField(section, "displacement", &im.dispField));
+    PetscCall(findField(section, "pressure", &im.presField));
+    if (im.dispField < 0 && nf > 0) im.dispField = 0;
+    PetscCheck(im.dispField >= 0, comm, PETSC_ERR_ARG_WRONG,
+               "FieldWriter: the section has no displacement field");
+    PetscCall(PetscSectionGetFieldComponents(section, im.dispField, &im.dispComp));
+    PetscCheck(im.dispComp >= 1 && im.dispComp <= 3, comm, PETSC_ERR_SUP,
+               "FieldWriter: displacement has %" PetscInt_FMT " components", im.dispComp);
+    if (im.presField >= 0) {
+      PetscInt nc;
+      PetscCall(PetscSectionGetFieldComponents(section, im.presField, &nc));
+      PetscCheck(nc == 1, comm, PETSC_ERR_SUP,
+                 "FieldWriter: pressure has %" PetscInt_FMT " components", nc);
+    }
+  }
+
+  // Ownership of points from the point SF: a point is owned unless it is a leaf.
+  PetscCall(DMPlexGetChart(im.dm, &pStart, &pEnd));
+  PetscCheck(pStart == 0, comm, PETSC_ERR_SUP, "FieldWriter: chart must start at 0");
+  std::vector<char> owned(pEnd, 1);
+  PetscSF sf;
+  {
+    PetscInt nroots, nleaves;
+    const PetscInt *ilocal;
+    PetscCall(DMGetPointSF(im.dm, &sf));
+    PetscCall(PetscSFGetGraph(sf, &nroots, &nleaves, &ilocal, nullptr));
+    if (nroots >= 0)
+      for (PetscInt l = 0; l < nleaves; ++l)
+        owned[ilocal ? ilocal[l] : l] = 0;
+  }
+
+  // Global vertex numbers: owned vertices numbered contiguously per rank, ghosts via the SF.
+  PetscCall(DMPlexGetDepthStratum(im.dm, 0, &vStart, &vEnd));
+  std::vector<PetscInt> gnum(pEnd, -1);
+  PetscInt nOwned = 0, vOffset = 0;
+  for (PetscInt v = vStart; v < vEnd; ++v)
+    if (owned[v]) ++nOwned;
+  PetscCallMPI(MPI_Exscan(&nOwned, &vOffset, 1, MPIU_INT, MPI_SUM, comm));
+  if (rank == 0) vOffset = 0;
+  PetscCall(MPIU_Allreduce(&nOwned, &im.numVertices, 1, MPIU_INT, MPI_SUM, comm));
+  im.ownedVertices.reserve(nOwned);
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    if (!owned[v]) continue;
+    gnum[v] = vOffset + static_cast<PetscInt>(im.ownedVertices.size());
+    im.ownedVertices.push_back(v);
+  }
+  {
+    std::vector<PetscInt> leafNum(gnum);
+    PetscCall(PetscSFBcastBegin(sf, MPIU_INT, gnum.data(), leafNum.data(), MPI_REPLACE));
+    PetscCall(PetscSFBcastEnd(sf, MPIU_INT, gnum.data(), leafNum.data(), MPI_REPLACE));
+    gnum.swap(leafNum);
+  }
+
+  // Bulk cells owned by this rank; a single cell type over the whole mesh.
+  PetscCall(DMPlexGetVTKCellHeight(im.dm, &cellHeight));
+  PetscCall(DMPlexGetHeightStratum(im.dm, cellHeight, &cStart, &cEnd));
+  std::vector<PetscInt> cells;
+  PetscInt typeMin = PETSC_MAX_INT, typeMax = -1, nCellsLocal = 0;
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    DMPolytopeType ct;
+    PetscInt nc;
+    PetscCall(DMPlexGetCellType(im.dm, c, &ct));
+    if (!owned[c] || !xdmfTopologyName(ct, &nc)) continue;
+    typeMin = PetscMin(typeMin, (PetscInt)ct);
+    typeMax = PetscMax(typeMax, (PetscInt)ct);
+  }
+  {
+    PetscInt in[2] = {-typeMin, typeMax}, out[2];
+    PetscCall(MPIU_Allreduce(in, out, 2, MPIU_INT, MPI_MAX, comm));
+    typeMin = -out[0];
+    typeMax = out[1];
+  }
+  PetscCheck(typeMax >= 0, comm, PETSC_ERR_ARG_WRONG,
+             "FieldWriter: the mesh has no bulk cells (triangle, quadrilateral, tetrahedron, "
+             "hexahedron)");
+  PetscCheck(typeMin == typeMax, comm, PETSC_ERR_SUP,
+             "FieldWriter: mixed bulk cell types (%s and %s) are not supported; one bulk cell "
+             "type per mesh",
+             DMPolytopeTypes[typeMin], DMPolytopeTypes[typeMax]);
+  im.cellType = (DMPolytopeType)typeMax;
+  (void)xdmfTopologyName(im.cellType, &im.corners);
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    DMPolytopeType ct;
+    PetscInt *closure = nullptr, closureSize, nv = 0;
+    PetscCall(DMPlexGetCellType(im.dm, c, &ct));
+    if (!owned[c] || ct != im.cellType) continue;
+    PetscCall(DMPlexGetTransitiveClosure(im.dm, c, PETSC_TRUE, &closureSize, &closure));
+    PetscInt verts[8];
+    for (PetscInt p = 0; p < 2 * closureSize; p += 2) {
+      const PetscInt q = closure[p];
+      if (q >= vStart && q < vEnd && nv < 8) verts[nv++] = q;
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(im.dm, c, PETSC_TRUE, &closureSize, &closure));
+    PetscCheck(nv == im.corners, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "FieldWriter: cell %" PetscInt_FMT " has %" PetscInt_FMT
+               " vertices in its closure, expected %" PetscInt_FMT,
+               c, nv, im.corners);
+    closureToXdmfOrder(im.cellType, verts);
+    for (PetscInt i = 0; i < nv; ++i) {
+      PetscCheck(gnum[verts[i]] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "FieldWriter: vertex %" PetscInt_FMT " has no global number", verts[i]);
+      cells.push_back(gnum[verts[i]]);
+    }
+    ++nCellsLocal;
+  }
+  PetscCall(MPIU_Allreduce(&nCellsLocal, &im.numCells, 1, MPIU_INT, MPI_SUM, comm));
+
+  // Coordinates of the owned vertices.
+  std::vector<PetscScalar> xyz(im.ownedVertices.size() * im.cdim, 0.0);
+  {
+    Vec coords;
+    PetscSection csec;
+    const PetscScalar *ca;
+    PetscCall(DMGetCoordinatesLocal(im.dm, &coords));
+    PetscCall(DMGetCoordinateSection(im.dm, &csec));
+    PetscCall(VecGetArrayRead(coords, &ca));
+    for (size_t i = 0; i < im.ownedVertices.size(); ++i) {
+      PetscInt dof, off;
+      PetscCall(PetscSectionGetDof(csec, im.ownedVertices[i], &dof));
+      PetscCall(PetscSectionGetOffset(csec, im.ownedVertices[i], &off));
+      PetscCheck(dof == im.cdim, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "FieldWriter: vertex %" PetscInt_FMT " has %" PetscInt_FMT " coordinates",
+                 im.ownedVertices[i], dof);
+      for (PetscInt d = 0; d < im.cdim; ++d)
+        xyz[i * im.cdim + d] = ca[off + d];
+    }
+    PetscCall(VecRestoreArrayRead(coords, &ca));
+  }
+
+  // HDF5 file with geometry and topology.
+  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(), FILE_MODE_WRITE, &im.viewer));
+  PetscCall(im.writeVertexVec("/geometry", "vertices", im.cdim, xyz, 0.0, false));
+  {
+    IS is;
+    PetscCall(ISCreateGeneral(comm, static_cast<PetscInt>(cells.size()), cells.data(),
+                              PETSC_COPY_VALUES, &is));
+    PetscCall(ISSetBlockSize(is, im.corners));
+    PetscCall(PetscObjectSetName((PetscObject)is, "cells"));
+    PetscCall(PetscViewerHDF5PushGroup(im.viewer, "/topology"));
+    PetscCall(ISView(is, im.viewer));
+    PetscCall(PetscViewerHDF5PopGroup(im.viewer));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(PetscViewerFlush(im.viewer));
+  PetscCall(im.writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_initial)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(impl_ && impl_->viewer, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE,
+             "FieldWriter::write called before open or after close");
+  Impl &im = *impl_;
+  PetscSection section;
+  PetscInt storage, n;
+  const PetscScalar *sol, *init = nullptr;
+  const size_t nv = im.ownedVertices.size();
+
+  PetscCall(DMGetLocalSection(im.dm, &section));
+  PetscCall(PetscSectionGetStorageSize(section, &storage));
+  PetscCall(VecGetLocalSize(local_solution, &n));
+  PetscCheck(n == storage, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
+             "FieldWriter: local solution has size %" PetscInt_FMT ", local section %" PetscInt_FMT,
+             n, storage);
+  if (local_initial) {
+    PetscCall(VecGetLocalSize(local_initial, &n));
+    PetscCheck(n == storage, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
+               "FieldWriter: local initial vector has size %" PetscInt_FMT
+               ", local section %" PetscInt_FMT,
+               n, storage);
+  }
+
+  std::vector<PetscScalar> disp(nv * 3, 0.0), pres, excess;
+  if (im.presField >= 0) {
+    pres.assign(nv, 0.0);
+    excess.assign(nv, 0.0);
+  }
+  PetscCall(VecGetArrayRead(local_solution, &sol));
+  if (local_initial) PetscCall(VecGetArrayRead(local_initial, &init));
+  for (size_t i = 0; i < nv; ++i) {
+    const PetscInt v = im.ownedVertices[i];
+    PetscInt dof, off;
+    PetscCall(PetscSectionGetFieldDof(section, v, im.dispField, &dof));
+    if (dof > 0) {
+      PetscCall(PetscSectionGetFieldOffset(section, v, im.dispField, &off));
+      for (PetscInt d = 0; d < PetscMin(dof, (PetscInt)3); ++d)
+        disp[3 * i + d] = sol[off + d];
+    }
+    if (im.presField >= 0) {
+      PetscCall(PetscSectionGetFieldDof(section, v, im.presField, &dof));
+      if (dof > 0) {
+        PetscCall(PetscSectionGetFieldOffset(section, v, im.presField, &off));
+        pres[i] = sol[off];
+        excess[i] = init ? sol[off] - init[off] : sol[off];
+      }
+    }
+  }
+  PetscCall(VecRestoreArrayRead(local_solution, &sol));
+  if (local_initial) PetscCall(VecRestoreArrayRead(local_initial, &init));
+
+  const std::string step = std::to_string(im.times.size());
+  PetscCall(im.writeVertexVec("/fields/displacement", step, 3, disp, time, true));
+  if (im.presField >= 0) {
+    PetscCall(im.writeVertexVec("/fields/pressure", step, 1, pres, time, true));
+    PetscCall(im.writeVertexVec("/fields/excess_pressure", step, 1, excess, time, true));
+  }
+  PetscCall(PetscViewerFlush(im.viewer));
+  im.times.push_back(time);
+  PetscCall(im.writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::close()
+{
+  PetscFunctionBeginUser;
+  if (!impl_ || !impl_->viewer) PetscFunctionReturn(0);
+  PetscCall(PetscViewerDestroy(&impl_->viewer));
+  PetscCall(impl_->writeXdmf());
+  PetscCall(DMDestroy(&impl_->dm));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam
