@@ -14,6 +14,10 @@ namespace poroseam {
 
 /// What an integration point of an interface reports.
 struct InterfacePointState {
+  int point = 0;                       ///< integration point index within its cohesive cell
+  int num_points = 0;                  ///< integration points of the cell
+  int face_vertices = 0;               ///< vertices of the cell's side-1 face
+  const double *face_coords = nullptr; ///< their coordinates (face_vertices x dim), face order
   double x[3] = {0, 0, 0};
   double weight = 0.0;     ///< area (length in 2D) it stands for
   double frame[3][3];      ///< e1 (normal, side 1 -> 2), e2, e3

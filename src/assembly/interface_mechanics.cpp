@@ -243,6 +243,10 @@ template <class Kernel> PetscErrorCode InterfaceMechanics::loop(Vec local, Kerne
     for (int q = 0; q < e.num_quadrature; ++q) {
       const double *phi = &e.basis[q * e.num_vertices];
       InterfacePointState st;
+      st.point = q;
+      st.num_points = e.num_quadrature;
+      st.face_vertices = e.num_vertices;
+      st.face_coords = x1.data();
       st.weight = surfaceWeight(e, x1.data(), dim_, q);
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)

@@ -12,16 +12,14 @@
 // readable time series.
 #include "poroseam/field_writer.hpp"
 
+#include "xdmf.hpp"
+
 #include <petscdmplex.h>
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
-#include <system_error>
 
 namespace poroseam {
 
@@ -90,13 +88,6 @@ PetscErrorCode findField(PetscSection section, const char *name, PetscInt *field
   PetscFunctionReturn(0);
 }
 
-std::string formatDouble(double x)
-{
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.17g", x);
-  return buf;
-}
-
 } // namespace
 
 struct FieldWriter::Impl {
@@ -127,38 +118,19 @@ PetscErrorCode FieldWriter::Impl::writeVertexVec(const char *group, const std::s
                                                  const std::vector<PetscScalar> &values,
                                                  double time, bool withTime)
 {
-  Vec v;
-  PetscScalar *a;
   const PetscInt n = static_cast<PetscInt>(ownedVertices.size()) * bs;
 
   PetscFunctionBeginUser;
   PetscCheck(static_cast<PetscInt>(values.size()) == n, comm, PETSC_ERR_PLIB,
              "FieldWriter: wrong number of values for %s", name.c_str());
-  PetscCall(VecCreate(comm, &v));
-  PetscCall(VecSetSizes(v, n, PETSC_DETERMINE));
-  PetscCall(VecSetBlockSize(v, bs));
-  PetscCall(VecSetType(v, VECMPI));
-  PetscCall(PetscObjectSetName((PetscObject)v, name.c_str()));
-  PetscCall(VecGetArray(v, &a));
-  std::copy(values.begin(), values.end(), a);
-  PetscCall(VecRestoreArray(v, &a));
-  PetscCall(PetscViewerHDF5PushGroup(viewer, group));
-  PetscCall(VecView(v, viewer));
-  PetscCall(PetscViewerHDF5PopGroup(viewer));
-  if (withTime) {
-    const std::string path = std::string(group) + "/" + name;
-    PetscReal t = static_cast<PetscReal>(time);
-
-    PetscCall(PetscViewerHDF5WriteAttribute(viewer, path.c_str(), "time", PETSC_REAL, &t));
-  }
-  PetscCall(VecDestroy(&v));
+  PetscCall(xdmf::writeReals(viewer, comm, group, name, bs, values, withTime ? &time : nullptr));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode FieldWriter::Impl::writeXdmf()
 {
   PetscMPIInt rank;
-  int ok = 1;
+  std::ostringstream x;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -167,7 +139,6 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
     const char *topo = xdmfTopologyName(cellType, &dummy);
     const std::string intPrec = std::to_string(sizeof(PetscInt));
     const std::string nv = std::to_string(numVertices);
-    std::ostringstream x;
 
     auto topologyAndGeometry = [&](std::ostringstream &o) {
       o << "        <Topology TopologyType=\"" << topo << "\" NumberOfElements=\"" << numCells
@@ -204,7 +175,7 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
     }
     for (size_t s = 0; s < times.size(); ++s) {
       x << "      <Grid Name=\"mesh\" GridType=\"Uniform\">\n"
-        << "        <Time Value=\"" << formatDouble(times[s]) << "\" />\n";
+        << "        <Time Value=\"" << xdmf::formatDouble(times[s]) << "\" />\n";
       topologyAndGeometry(x);
       attribute(x, "displacement", true, s);
       if (presField >= 0) {
@@ -216,22 +187,8 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
     x << "    </Grid>\n"
       << "  </Domain>\n"
       << "</Xdmf>\n";
-
-    const std::string tmp = xmfPath + ".tmp";
-    {
-      std::ofstream out(tmp, std::ios::trunc);
-      out << x.str();
-      out.close();
-      if (!out) ok = 0;
-    }
-    if (ok) {
-      std::error_code ec;
-      std::filesystem::rename(tmp, xmfPath, ec);
-      if (ec) ok = 0;
-    }
   }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "FieldWriter: cannot write %s", xmfPath.c_str());
+  PetscCall(xdmf::replaceFile(comm, xmfPath, x.str(), "FieldWriter"));
   PetscFunctionReturn(0);
 }
 
@@ -265,17 +222,7 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
 
   // Output directory (rank 0 creates it).
-  {
-    int ok = 1;
-    if (rank == 0 && !dir.empty()) {
-      std::error_code ec;
-      std::filesystem::create_directories(dir, ec);
-      if (ec) ok = 0;
-    }
-    PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-    PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "FieldWriter: cannot create directory %s",
-               dir.c_str());
-  }
+  PetscCall(xdmf::createDirectory(comm, dir, "FieldWriter"));
   const std::string prefix = dir.empty() ? basename : dir + "/" + basename;
   im.h5name = basename + ".h5";
   im.xmfPath = prefix + ".xmf";
@@ -425,17 +372,7 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   // HDF5 file with geometry and topology.
   PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(), FILE_MODE_WRITE, &im.viewer));
   PetscCall(im.writeVertexVec("/geometry", "vertices", im.cdim, xyz, 0.0, false));
-  {
-    IS is;
-    PetscCall(ISCreateGeneral(comm, static_cast<PetscInt>(cells.size()), cells.data(),
-                              PETSC_COPY_VALUES, &is));
-    PetscCall(ISSetBlockSize(is, im.corners));
-    PetscCall(PetscObjectSetName((PetscObject)is, "cells"));
-    PetscCall(PetscViewerHDF5PushGroup(im.viewer, "/topology"));
-    PetscCall(ISView(is, im.viewer));
-    PetscCall(PetscViewerHDF5PopGroup(im.viewer));
-    PetscCall(ISDestroy(&is));
-  }
+  PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.corners, cells));
   PetscCall(PetscViewerFlush(im.viewer));
   PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);

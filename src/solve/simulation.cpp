@@ -1,6 +1,7 @@
 #include "poroseam/simulation.hpp"
 
 #include "poroseam/field_writer.hpp"
+#include "poroseam/interface_writer.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/mesh.hpp"
@@ -30,6 +31,7 @@ struct Run {
   Problem problem;
   Probes probes;
   FieldWriter fields;
+  InterfaceWriter interface_fields;
   TS ts = nullptr;
   Vec previous = nullptr; ///< local state of the last accepted step (boundary values included)
   Vec initial = nullptr;  ///< local initial state
@@ -41,8 +43,9 @@ struct Run {
   PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
   double step_start = 0.0;
   int step = 0;
-  double residual_scale = 0.0;  ///< largest initial Newton residual of the run
-  double reference_rtol = 1e-9; ///< -snes_reference_rtol
+  double zero_state_scale = 0.0; ///< gross residual of the zero state (weight, initial stress)
+  double stage_time = 0.0;       ///< time of the step being solved
+  double reference_rtol = 1e-9;  ///< -snes_reference_rtol
 };
 
 PetscErrorCode currentDt(Run &run, double *dt)
@@ -69,6 +72,7 @@ PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f,
   PetscFunctionBeginUser;
   PetscCall(currentDt(run, &dt));
   run.attempted_dt = dt;
+  run.stage_time = t;
   if (run.fail_dt_above > 0.0 && dt > run.fail_dt_above) {
     // Test hook standing in for a step too large to converge (see -test_fail_dt_above).
     SNES snes;
@@ -93,26 +97,6 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   }
-  PetscFunctionReturn(0);
-}
-
-/// PETSc's default test, plus: converged when the residual is below reference_rtol times a
-/// force scale: the gross residual of the zero state (weight, initial stresses) or the largest
-/// initial residual of the run, whichever is larger. A step that starts close to equilibrium (slow
-/// consolidation, small increments) cannot reach rtol relative to its own tiny initial
-/// residual: round-off of the force rows stops it first.
-PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
-                               PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
-{
-  Run &run = *static_cast<Run *>(ctx);
-  PetscFunctionBeginUser;
-  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
-  const double scale = run.residual_scale;
-  if (it == 0) run.residual_scale = std::max(run.residual_scale, (double)fnorm);
-  // At least one Newton update per step before this test applies.
-  if (*reason == SNES_CONVERGED_ITERATING && it > 0 && scale > 0.0 &&
-      fnorm <= run.reference_rtol * scale)
-    *reason = SNES_CONVERGED_FNORM_ABS;
   PetscFunctionReturn(0);
 }
 
@@ -209,6 +193,58 @@ PetscErrorCode interfaceForces(Run &run, Vec local, std::vector<double> &out)
   PetscFunctionReturn(0);
 }
 
+/// Force level of the iterate X: the sum of the magnitudes of the forces through every
+/// boundary (reactions and applied loads) and interface.
+PetscErrorCode forceLevel(Run &run, Vec X, double *level)
+{
+  Vec local, zero;
+  std::vector<double> resultants, interface;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(run.dm, &local));
+  PetscCall(DMGetLocalVector(run.dm, &zero));
+  PetscCall(VecSet(zero, 0.0));
+  PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, local));
+  PetscCall(run.problem.insertBoundaryValues(run.stage_time, run.attempted_dt, run.previous, local,
+                                             nullptr));
+  PetscCall(boundaryResultants(run, run.stage_time, local, zero, resultants));
+  PetscCall(interfaceForces(run, local, interface));
+  PetscCall(DMRestoreLocalVector(run.dm, &zero));
+  PetscCall(DMRestoreLocalVector(run.dm, &local));
+  const int dim = run.scene.dim;
+  double sum = 0.0;
+  for (size_t i = 0; i < resultants.size(); ++i)
+    if ((int)(i % (dim + 1)) < dim) sum += std::fabs(resultants[i]); // forces, not fluxes
+  for (double f : interface)
+    sum += std::fabs(f);
+  *level = sum;
+  PetscFunctionReturn(0);
+}
+
+/// PETSc's default tests (with -snes_rtol 1e-12 by default), plus the one that normally
+/// decides: after at least one Newton update, converged when the residual is below
+/// reference_rtol times a force scale, the larger of the gross residual of the zero state
+/// (weight, initial stresses) and the force level of the current iterate (reactions, loads,
+/// interface forces). Relative to the initial residual is no good here: a step that starts
+/// near equilibrium cannot reduce its tiny residual by rtol before round-off, and a
+/// displacement-driven step of a stiff body starts with a huge residual that says nothing
+/// of the forces that matter.
+PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                               PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+{
+  Run &run = *static_cast<Run *>(ctx);
+  PetscFunctionBeginUser;
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  if (*reason != SNES_CONVERGED_ITERATING || it == 0) PetscFunctionReturn(0);
+  Vec X;
+  double level;
+  PetscCall(SNESGetSolution(snes, &X));
+  PetscCall(forceLevel(run, X, &level));
+  const double scale = std::max(run.zero_state_scale, level);
+  PetscCall(PetscInfo(snes, "poroseam: residual %g, force scale %g\n", (double)fnorm, scale));
+  if (scale > 0.0 && fnorm <= run.reference_rtol * scale) *reason = SNES_CONVERGED_FNORM_ABS;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode openTimeSeries(Run &run)
 {
   PetscMPIInt rank;
@@ -225,6 +261,14 @@ PetscErrorCode openTimeSeries(Run &run)
     for (int d = 0; d < run.scene.dim; ++d)
       std::fprintf(run.csv, ",%s.F%s", b.name.c_str(), axis[d]);
     if (run.scene.hasPressure()) std::fprintf(run.csv, ",%s.flux", b.name.c_str());
+  }
+  for (const auto &i : run.scene.interfaces) {
+    for (int d = 0; d < run.scene.dim; ++d)
+      std::fprintf(run.csv, ",%s.F%s", i.name.c_str(), axis[d]);
+    if (i.surfaces.size() > 1)
+      for (const auto &s : i.surfaces)
+        for (int d = 0; d < run.scene.dim; ++d)
+          std::fprintf(run.csv, ",%s.%s.F%s", i.name.c_str(), s.c_str(), axis[d]);
   }
   for (const auto &p : run.scene.probes) {
     for (int d = 0; d < run.scene.dim; ++d)
@@ -253,13 +297,17 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
         std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + d]);
       if (run.scene.hasPressure()) std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + dim]);
     }
+    for (double v : interface_forces)
+      std::fprintf(run.csv, ",%.10e", v);
     for (double v : probes)
       std::fprintf(run.csv, ",%.12e", v);
     std::fprintf(run.csv, "\n");
     std::fflush(run.csv);
   }
-  if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0)
+  if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0) {
     PetscCall(run.fields.write(t, local, run.initial));
+    PetscCall(run.interface_fields.write(t, run.problem.interfaces(), local));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -418,6 +466,8 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(
       PetscOptionsGetReal(nullptr, nullptr, "-snes_reference_rtol", &run.reference_rtol, nullptr));
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
+  PetscCall(
+      SNESSetTolerances(snes, PETSC_DEFAULT, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene));
   TSType type;
@@ -441,14 +491,16 @@ PetscErrorCode runSimulation(MPI_Comm comm)
     PetscCall(DMLocalToGlobal(run.dm, f, ADD_VALUES, F));
     PetscReal norm;
     PetscCall(VecNorm(F, NORM_2, &norm));
-    run.residual_scale = norm;
+    run.zero_state_scale = norm;
     PetscCall(DMRestoreGlobalVector(run.dm, &F));
     PetscCall(DMRestoreLocalVector(run.dm, &f));
     PetscCall(DMRestoreLocalVector(run.dm, &zero));
   }
   PetscCall(openTimeSeries(run));
-  if (run.scene.output_every > 0)
+  if (run.scene.output_every > 0) {
     PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields"));
+    PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir));
+  }
   {
     // Row 0: the initial state.
     Vec rate;
@@ -470,6 +522,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
     PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ts_max_reject", &rejects, nullptr));
     if (run.csv) std::fclose(run.csv);
     PetscCall(run.fields.close());
+    PetscCall(run.interface_fields.close());
     SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
             "step %d failed (%s): Newton did not converge from t = %g s even after %d cuts of "
             "the time step (last tried dt = %g s). Results up to t = %g s are in %s; a smaller "
@@ -481,6 +534,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
                         MPI_Wtime() - t0, run.scene.output_dir.c_str()));
   if (run.csv) std::fclose(run.csv);
   PetscCall(run.fields.close());
+  PetscCall(run.interface_fields.close());
   PetscCall(VecDestroy(&X));
   PetscCall(VecDestroy(&run.previous));
   PetscCall(VecDestroy(&run.initial));

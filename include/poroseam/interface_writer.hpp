@@ -1,0 +1,47 @@
+// Interface output: HDF5 + XDMF time series of the zero-thickness interfaces (cohesive cells)
+// that ParaView opens next to the bulk fields.
+#pragma once
+
+#include "poroseam/interface_mechanics.hpp"
+#include "poroseam/scene.hpp"
+#include <petscvec.h>
+#include <string>
+
+namespace poroseam {
+
+/// Writes `<dir>/interfaces.h5` and `<dir>/interfaces.xmf`: two grids, each an XDMF temporal
+/// collection in the same Domain (ParaView shows them as two blocks):
+///  - "interface_cells": one cell per cohesive cell, its side-1 face (Polyline of 2 nodes in
+///    2D; Triangle or Quadrilateral in 3D, or XDMF "Mixed" topology when the interfaces have
+///    both). Nodes are duplicated per cell (cell i's nodes follow cell i-1's). Cell data are
+///    averages over the cell's integration points weighted by their area (`weight`), except
+///    state (the maximum: 0 open, 1 stick, 2 slip) and mobilised_friction (|mean tau| /
+///    mean p'_N of the cell, 0 where mean p'_N = 0).
+///  - "interface_points": every integration point as a Polyvertex at its position x, with
+///    the same quantities unaveraged (mobilised_friction = |tau| / p'_N there).
+/// Geometry, topology and the constant data (interface, surface, normal, area/weight, owning
+/// cell) are written at the first write(); every write() appends one time. The HDF5 layout
+/// is described in src/output/interface_writer.cpp; tests/support/interface_reader.py reads it.
+/// Cells are ordered by rank, then in InterfaceMechanics::visit order. Collective on comm.
+class InterfaceWriter {
+public:
+  InterfaceWriter() = default;
+  InterfaceWriter(const InterfaceWriter &) = delete;
+  InterfaceWriter &operator=(const InterfaceWriter &) = delete;
+  ~InterfaceWriter();
+
+  /// Prepares the files (nothing at all when the scene has no interfaces). `scene` must
+  /// outlive the writer.
+  PetscErrorCode open(MPI_Comm comm, const Scene &scene, const std::string &dir);
+  /// Appends one time: the interface state at `local_solution` (a local vector of the
+  /// solution DM with boundary values inserted). Returns at once without interfaces.
+  PetscErrorCode write(double time, const InterfaceMechanics &mech, Vec local_solution);
+  /// Closes the HDF5 file and finishes the XDMF index (also called by the destructor).
+  PetscErrorCode close();
+
+private:
+  struct Impl;
+  Impl *impl_ = nullptr;
+};
+
+} // namespace poroseam

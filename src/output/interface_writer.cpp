@@ -1,0 +1,563 @@
+// Interface output: HDF5 (through PETSc's HDF5 viewer) plus an XDMF index for ParaView.
+//
+// HDF5 layout of <dir>/interfaces.h5. Nc cells (one per cohesive cell: its side-1 face), Nn
+// cell nodes (every cell has its own copies, cell after cell), Np integration points; all in
+// rank order, then InterfaceMechanics::visit order. d = mesh dimension, t = d - 1 tangent
+// components. Integers are PetscInt.
+//   /cells/geometry                  [Nn, d]  double  face vertex coordinates
+//   /cells/topology                  [Nc, n]  int     node indices (n = 2, 3 or 4; face closure
+//                                                     order, the XDMF/VTK order), or [L, 1] in
+//                                                     XDMF "Mixed" form (4 = Triangle, 5 = Quad,
+//                                                     then the nodes) when triangles and quads mix
+//   /cells/nodes_per_cell            [Nc, 1]  int
+//   /cells/interface, /cells/surface [Nc, 1]  int     index in Scene::interfaces / its surfaces
+//   /cells/area                      [Nc]     double  sum of the integration point weights
+//   /cells/normal                    [Nc, 3]  double  e1 (side 1 -> side 2)
+//   /points/geometry                 [Np, d]  double  integration point positions
+//   /points/topology                 [Np, 1]  int     0..Np-1 (Polyvertex)
+//   /points/interface, /points/surface, /points/cell (index of its cell in /cells),
+//   /points/point (index within the cell)   [Np, 1] int (PETSc writes integers as [N, bs])
+//   /points/weight [Np], /points/normal [Np, 3]       double
+//   /cells/fields/<name>/<step>, /points/fields/<name>/<step>, each with attribute "time":
+//     gap_normal [N], opening [N], slip [N] (2D) or [N, 2] (3D): local tangential gap,
+//     slip_vector [N, 3] = sum_k slip_k e_(k+1), contact_pressure_effective [N],
+//     shear_stress [N] or [N, 2]: local tau, shear_traction [N, 3] = sum_k tau_k e_(k+1),
+//     traction [N, 3] (on side 1, global), mobilised_friction [N] = |tau| / p'_N (0 where
+//     p'_N = 0), state [N, 1] int (0 open, 1 stick, 2 slip).
+//   Cell values are averages over the cell's points weighted by `weight`; the cell's
+//   mobilised_friction is |mean tau| / mean p'_N and its state the maximum over its points.
+// XDMF <dir>/interfaces.xmf: one Domain with two temporal collections, "interface_cells"
+// (Polyline / Triangle / Quadrilateral / Mixed, Center="Cell" attributes) and
+// "interface_points" (Polyvertex, Center="Node" attributes). 2-component arrays have
+// AttributeType "Matrix" (XDMF "Vector" means 3 components). Rank 0 rewrites the XDMF file
+// after every write() (temporary file + rename).
+#include "poroseam/interface_writer.hpp"
+
+#include "xdmf.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace poroseam {
+
+namespace {
+
+constexpr const char *kWho = "InterfaceWriter";
+
+struct PointRecord {
+  PetscInt cell;
+  int iface, surface, point, num_points;
+  double x[3], weight, normal[3];
+  double gap_normal, opening, slip[2], slip_vector[3];
+  double pressure, shear[2], shear_traction[3], traction[3];
+  int state;
+};
+
+struct CellRecord {
+  PetscInt cell;
+  int iface, surface;
+  int nodes;
+  std::vector<double> coords; // nodes x dim
+  size_t first, count;        // its points
+};
+
+// Quantities of one output location (a cell or a point).
+struct Values {
+  double gap_normal = 0, opening = 0, slip[2] = {0, 0}, slip_vector[3] = {0, 0, 0};
+  double pressure = 0, shear[2] = {0, 0}, shear_traction[3] = {0, 0, 0}, traction[3] = {0, 0, 0};
+  double mobilised = 0;
+  int state = 0;
+};
+
+double mobilised(double pressure, const double shear[2], int t)
+{
+  double s = 0.0;
+  for (int k = 0; k < t; ++k)
+    s += shear[k] * shear[k];
+  return pressure > 0.0 ? std::sqrt(s) / pressure : 0.0;
+}
+
+Values pointValues(const PointRecord &p, int t)
+{
+  Values v;
+  v.gap_normal = p.gap_normal;
+  v.opening = p.opening;
+  v.pressure = p.pressure;
+  for (int k = 0; k < 2; ++k)
+    v.slip[k] = p.slip[k], v.shear[k] = p.shear[k];
+  for (int d = 0; d < 3; ++d)
+    v.slip_vector[d] = p.slip_vector[d], v.shear_traction[d] = p.shear_traction[d],
+    v.traction[d] = p.traction[d];
+  v.mobilised = mobilised(p.pressure, p.shear, t);
+  v.state = p.state;
+  return v;
+}
+
+Values cellValues(const CellRecord &c, const std::vector<PointRecord> &points, int t)
+{
+  Values v;
+  double total = 0.0;
+  for (size_t i = c.first; i < c.first + c.count; ++i)
+    total += points[i].weight;
+  const bool equal = !(total > 0.0); // degenerate face: plain mean
+  for (size_t i = c.first; i < c.first + c.count; ++i) {
+    const PointRecord &p = points[i];
+    const double w = equal ? 1.0 / c.count : p.weight / total;
+    v.gap_normal += w * p.gap_normal;
+    v.opening += w * p.opening;
+    v.pressure += w * p.pressure;
+    for (int k = 0; k < 2; ++k)
+      v.slip[k] += w * p.slip[k], v.shear[k] += w * p.shear[k];
+    for (int d = 0; d < 3; ++d)
+      v.slip_vector[d] += w * p.slip_vector[d], v.shear_traction[d] += w * p.shear_traction[d],
+          v.traction[d] += w * p.traction[d];
+    v.state = std::max(v.state, p.state);
+  }
+  v.mobilised = mobilised(v.pressure, v.shear, t);
+  return v;
+}
+
+struct Attribute {
+  std::string name, path; // path: the dataset, or the group of per-step datasets
+  int components;
+  bool integer, per_step;
+};
+
+} // namespace
+
+struct InterfaceWriter::Impl {
+  MPI_Comm comm = MPI_COMM_NULL;
+  const Scene *scene = nullptr;
+  bool enabled = false;
+  int dim = 0;
+  PetscViewer viewer = nullptr;
+  std::string h5name = "interfaces.h5";
+  std::string xmfPath;
+  std::vector<double> times;
+
+  // Set at the first write.
+  bool mesh_written = false;
+  PetscInt num_cells = 0, num_nodes = 0, num_points = 0;
+  PetscInt min_nodes = 0, max_nodes = 0, mixed_length = 0;
+  std::vector<PetscInt> local_cells;  // cohesive cell of each local output cell (for checks)
+  std::vector<int> local_point_count; // integration points of each local output cell
+
+  PetscErrorCode collect(const InterfaceMechanics &mech, Vec local, std::vector<CellRecord> &cells,
+                         std::vector<PointRecord> &points) const;
+  PetscErrorCode writeMesh(const std::vector<CellRecord> &cells,
+                           const std::vector<PointRecord> &points);
+  PetscErrorCode writeValues(const std::string &grid, const std::vector<Values> &values,
+                             size_t step, double time);
+  std::vector<Attribute> attributes(bool cells) const;
+  PetscErrorCode writeXdmf();
+};
+
+PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceMechanics &mech, Vec local,
+                                              std::vector<CellRecord> &cells,
+                                              std::vector<PointRecord> &points) const
+{
+  const int d = dim, t = dim - 1;
+  bool bad = false;
+
+  PetscFunctionBeginUser;
+  cells.clear();
+  points.clear();
+  PetscCall(
+      mech.visit(local, [&](int iface, int surface, PetscInt cell, const InterfacePointState &st) {
+        if (cells.empty() || cells.back().cell != cell || st.point == 0) {
+          CellRecord c;
+          c.cell = cell;
+          c.iface = iface;
+          c.surface = surface;
+          c.nodes = st.face_vertices;
+          if (st.face_coords)
+            c.coords.assign(st.face_coords, st.face_coords + st.face_vertices * d);
+          c.first = points.size();
+          c.count = 0;
+          if (st.point != 0 || !st.face_coords) bad = true;
+          cells.push_back(std::move(c));
+        }
+        CellRecord &c = cells.back();
+        ++c.count;
+        PointRecord p;
+        p.cell = cell;
+        p.iface = iface;
+        p.surface = surface;
+        p.point = st.point;
+        p.num_points = st.num_points;
+        for (int i = 0; i < 3; ++i) {
+          p.x[i] = i < d ? st.x[i] : 0.0;
+          p.normal[i] = st.frame[0][i];
+          p.traction[i] = st.traction[i];
+          p.slip_vector[i] = 0.0;
+          p.shear_traction[i] = 0.0;
+        }
+        p.weight = st.weight;
+        p.gap_normal = st.gap_normal;
+        p.opening = st.opening;
+        p.pressure = st.response.contact_pressure_effective;
+        for (int k = 0; k < 2; ++k) {
+          p.slip[k] = k < t ? st.gap_tangential[k] : 0.0;
+          p.shear[k] = k < t ? st.response.shear[k] : 0.0;
+        }
+        for (int k = 0; k < t; ++k)
+          for (int i = 0; i < 3; ++i) {
+            p.slip_vector[i] += p.slip[k] * st.frame[k + 1][i];
+            p.shear_traction[i] += p.shear[k] * st.frame[k + 1][i];
+          }
+        p.state = static_cast<int>(st.response.state);
+        points.push_back(p);
+      }));
+  for (const CellRecord &c : cells)
+    if (c.count != static_cast<size_t>(points[c.first].num_points) || c.nodes < 2 || c.nodes > 4)
+      bad = true;
+  PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "%s: unexpected integration point sequence from InterfaceMechanics::visit", kWho);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &cells,
+                                                const std::vector<PointRecord> &points)
+{
+  const PetscInt nc = static_cast<PetscInt>(cells.size());
+  const PetscInt np = static_cast<PetscInt>(points.size());
+  PetscInt nn = 0, lmin = PETSC_MAX_INT, lmax = 0;
+
+  PetscFunctionBeginUser;
+  for (const CellRecord &c : cells) {
+    nn += c.nodes;
+    lmin = PetscMin(lmin, (PetscInt)c.nodes);
+    lmax = PetscMax(lmax, (PetscInt)c.nodes);
+  }
+  PetscInt local[3] = {nc, nn, np}, offset[3] = {0, 0, 0}, total[3];
+  PetscCallMPI(MPI_Exscan(local, offset, 3, MPIU_INT, MPI_SUM, comm));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) offset[0] = offset[1] = offset[2] = 0;
+  PetscCall(MPIU_Allreduce(local, total, 3, MPIU_INT, MPI_SUM, comm));
+  {
+    PetscInt in[2] = {-lmin, lmax}, out[2];
+    PetscCall(MPIU_Allreduce(in, out, 2, MPIU_INT, MPI_MAX, comm));
+    min_nodes = -out[0];
+    max_nodes = out[1];
+  }
+  num_cells = total[0];
+  num_nodes = total[1];
+  num_points = total[2];
+  mesh_written = true;
+  local_cells.clear();
+  local_point_count.clear();
+  for (const CellRecord &c : cells) {
+    local_cells.push_back(c.cell);
+    local_point_count.push_back(static_cast<int>(c.count));
+  }
+  if (num_cells == 0) PetscFunctionReturn(0); // nothing to write (kept as an empty index)
+  PetscCheck(dim == 3 || (min_nodes == 2 && max_nodes == 2), comm, PETSC_ERR_PLIB,
+             "%s: 2D interface faces must be segments", kWho);
+
+  // Cells.
+  std::vector<PetscScalar> xyz, area, normal;
+  std::vector<PetscInt> topo, npc, iface, surface;
+  const bool mixed = min_nodes != max_nodes;
+  PetscInt node = offset[1], mixed_local = 0;
+  for (const CellRecord &c : cells) {
+    xyz.insert(xyz.end(), c.coords.begin(), c.coords.end());
+    if (mixed) {
+      topo.push_back(c.nodes == 3 ? 4 : 5); // XDMF Triangle, Quadrilateral
+      ++mixed_local;
+    }
+    for (int k = 0; k < c.nodes; ++k)
+      topo.push_back(node++);
+    mixed_local += c.nodes;
+    npc.push_back(c.nodes);
+    iface.push_back(c.iface);
+    surface.push_back(c.surface);
+    double a = 0.0;
+    for (size_t i = c.first; i < c.first + c.count; ++i)
+      a += points[i].weight;
+    area.push_back(a);
+    for (int i = 0; i < 3; ++i)
+      normal.push_back(points[c.first].normal[i]);
+  }
+  PetscCall(MPIU_Allreduce(&mixed_local, &mixed_length, 1, MPIU_INT, MPI_SUM, comm));
+  if (!mixed) mixed_length = 0;
+  PetscCall(xdmf::writeReals(viewer, comm, "/cells", "geometry", dim, xyz, nullptr));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "topology", mixed ? 1 : max_nodes, topo));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "nodes_per_cell", 1, npc));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "interface", 1, iface));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "surface", 1, surface));
+  PetscCall(xdmf::writeReals(viewer, comm, "/cells", "area", 1, area, nullptr));
+  PetscCall(xdmf::writeReals(viewer, comm, "/cells", "normal", 3, normal, nullptr));
+
+  // Integration points.
+  std::vector<PetscScalar> px, weight, pnormal;
+  std::vector<PetscInt> ptopo, piface, psurface, pcell, ppoint;
+  for (size_t ci = 0; ci < cells.size(); ++ci) {
+    const CellRecord &c = cells[ci];
+    for (size_t i = c.first; i < c.first + c.count; ++i) {
+      const PointRecord &p = points[i];
+      for (int d = 0; d < dim; ++d)
+        px.push_back(p.x[d]);
+      ptopo.push_back(offset[2] + static_cast<PetscInt>(i));
+      piface.push_back(p.iface);
+      psurface.push_back(p.surface);
+      pcell.push_back(offset[0] + static_cast<PetscInt>(ci));
+      ppoint.push_back(p.point);
+      weight.push_back(p.weight);
+      for (int d = 0; d < 3; ++d)
+        pnormal.push_back(p.normal[d]);
+    }
+  }
+  PetscCall(xdmf::writeReals(viewer, comm, "/points", "geometry", dim, px, nullptr));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "topology", 1, ptopo));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "interface", 1, piface));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "surface", 1, psurface));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "cell", 1, pcell));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "point", 1, ppoint));
+  PetscCall(xdmf::writeReals(viewer, comm, "/points", "weight", 1, weight, nullptr));
+  PetscCall(xdmf::writeReals(viewer, comm, "/points", "normal", 3, pnormal, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceWriter::Impl::writeValues(const std::string &grid,
+                                                  const std::vector<Values> &values, size_t step,
+                                                  double time)
+{
+  const int t = dim - 1;
+  const std::string s = std::to_string(step);
+  const std::string base = "/" + grid + "/fields/";
+  std::vector<PetscScalar> a;
+  auto scalar = [&](double Values::*m) {
+    a.clear();
+    for (const Values &v : values)
+      a.push_back(v.*m);
+    return a;
+  };
+  auto vec = [&](const double *(*get)(const Values &), int n) {
+    a.clear();
+    for (const Values &v : values)
+      a.insert(a.end(), get(v), get(v) + n);
+    return a;
+  };
+
+  PetscFunctionBeginUser;
+  PetscCall(xdmf::writeReals(viewer, comm, base + "gap_normal", s, 1, scalar(&Values::gap_normal),
+                             &time));
+  PetscCall(
+      xdmf::writeReals(viewer, comm, base + "opening", s, 1, scalar(&Values::opening), &time));
+  PetscCall(xdmf::writeReals(viewer, comm, base + "slip", s, t,
+                             vec([](const Values &v) -> const double * { return v.slip; }, t),
+                             &time));
+  PetscCall(xdmf::writeReals(
+      viewer, comm, base + "slip_vector", s, 3,
+      vec([](const Values &v) -> const double * { return v.slip_vector; }, 3), &time));
+  PetscCall(xdmf::writeReals(viewer, comm, base + "contact_pressure_effective", s, 1,
+                             scalar(&Values::pressure), &time));
+  PetscCall(xdmf::writeReals(viewer, comm, base + "shear_stress", s, t,
+                             vec([](const Values &v) -> const double * { return v.shear; }, t),
+                             &time));
+  PetscCall(xdmf::writeReals(
+      viewer, comm, base + "shear_traction", s, 3,
+      vec([](const Values &v) -> const double * { return v.shear_traction; }, 3), &time));
+  PetscCall(xdmf::writeReals(viewer, comm, base + "traction", s, 3,
+                             vec([](const Values &v) -> const double * { return v.traction; }, 3),
+                             &time));
+  PetscCall(xdmf::writeReals(viewer, comm, base + "mobilised_friction", s, 1,
+                             scalar(&Values::mobilised), &time));
+  std::vector<PetscInt> state;
+  for (const Values &v : values)
+    state.push_back(v.state);
+  PetscCall(xdmf::writeInts(viewer, comm, base + "state", s, 1, state, &time));
+  PetscFunctionReturn(0);
+}
+
+std::vector<Attribute> InterfaceWriter::Impl::attributes(bool cells) const
+{
+  const int t = dim - 1;
+  const std::string g = cells ? "/cells/" : "/points/";
+  std::vector<Attribute> a;
+  // Per time.
+  a.push_back({"gap_normal", g + "fields/gap_normal", 1, false, true});
+  a.push_back({"opening", g + "fields/opening", 1, false, true});
+  a.push_back({"slip", g + "fields/slip", t, false, true});
+  a.push_back({"slip_vector", g + "fields/slip_vector", 3, false, true});
+  a.push_back(
+      {"contact_pressure_effective", g + "fields/contact_pressure_effective", 1, false, true});
+  a.push_back({"shear_stress", g + "fields/shear_stress", t, false, true});
+  a.push_back({"shear_traction", g + "fields/shear_traction", 3, false, true});
+  a.push_back({"traction", g + "fields/traction", 3, false, true});
+  a.push_back({"mobilised_friction", g + "fields/mobilised_friction", 1, false, true});
+  a.push_back({"state", g + "fields/state", 1, true, true});
+  // Constant.
+  a.push_back({"interface", g + "interface", 1, true, false});
+  a.push_back({"surface", g + "surface", 1, true, false});
+  a.push_back({"normal", g + "normal", 3, false, false});
+  if (cells) {
+    a.push_back({"area", g + "area", 1, false, false});
+  } else {
+    a.push_back({"cell", g + "cell", 1, true, false});
+    a.push_back({"point", g + "point", 1, true, false});
+    a.push_back({"weight", g + "weight", 1, false, false});
+  }
+  return a;
+}
+
+PetscErrorCode InterfaceWriter::Impl::writeXdmf()
+{
+  PetscMPIInt rank;
+  std::ostringstream x;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    const bool have = mesh_written && num_cells > 0;
+    const std::string geomType = dim == 3 ? "XYZ" : "XY";
+    x << "<?xml version=\"1.0\" ?>\n"
+      << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      << "<Xdmf Version=\"3.0\">\n"
+      << "  <Domain>\n";
+    for (int grid = 0; grid < 2; ++grid) {
+      const bool cells = grid == 0;
+      const std::string gname = cells ? "interface_cells" : "interface_points";
+      const PetscInt n = cells ? num_cells : num_points;
+      const std::string ns = std::to_string(n);
+      x << "    <Grid Name=\"" << gname
+        << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      for (size_t s = 0; have && s < times.size(); ++s) {
+        x << "      <Grid Name=\"" << gname << "\" GridType=\"Uniform\">\n"
+          << "        <Time Value=\"" << xdmf::formatDouble(times[s]) << "\" />\n";
+        if (cells) {
+          const bool mixed = min_nodes != max_nodes;
+          const char *type = dim == 2         ? "Polyline"
+                             : mixed          ? "Mixed"
+                             : max_nodes == 3 ? "Triangle"
+                                              : "Quadrilateral";
+          x << "        <Topology TopologyType=\"" << type << "\" NumberOfElements=\"" << ns
+            << "\"";
+          if (!mixed) x << " NodesPerElement=\"" << max_nodes << "\"";
+          x << ">\n          "
+            << xdmf::dataItem(mixed ? std::to_string(mixed_length) + " 1"
+                                    : ns + " " + std::to_string(max_nodes),
+                              true, h5name, "/cells/topology")
+            << "\n        </Topology>\n"
+            << "        <Geometry GeometryType=\"" << geomType << "\">\n          "
+            << xdmf::dataItem(std::to_string(num_nodes) + " " + std::to_string(dim), false, h5name,
+                              "/cells/geometry")
+            << "\n        </Geometry>\n";
+        } else {
+          x << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << ns
+            << "\" NodesPerElement=\"1\">\n          "
+            << xdmf::dataItem(ns + " 1", true, h5name, "/points/topology")
+            << "\n        </Topology>\n"
+            << "        <Geometry GeometryType=\"" << geomType << "\">\n          "
+            << xdmf::dataItem(ns + " " + std::to_string(dim), false, h5name, "/points/geometry")
+            << "\n        </Geometry>\n";
+        }
+        for (const Attribute &a : attributes(cells)) {
+          const char *atype = a.components == 1   ? "Scalar"
+                              : a.components == 3 ? "Vector"
+                                                  : "Matrix";
+          // Integers are [N, bs] even for bs = 1 (ISView).
+          const std::string dims =
+              a.components == 1 && !a.integer ? ns : ns + " " + std::to_string(a.components);
+          const std::string path = a.per_step ? a.path + "/" + std::to_string(s) : a.path;
+          x << "        <Attribute Name=\"" << a.name << "\" AttributeType=\"" << atype
+            << "\" Center=\"" << (cells ? "Cell" : "Node") << "\">\n          "
+            << xdmf::dataItem(dims, a.integer, h5name, path) << "\n        </Attribute>\n";
+        }
+        x << "      </Grid>\n";
+      }
+      x << "    </Grid>\n";
+    }
+    x << "  </Domain>\n"
+      << "</Xdmf>\n";
+  }
+  PetscCall(xdmf::replaceFile(comm, xmfPath, x.str(), kWho));
+  PetscFunctionReturn(0);
+}
+
+InterfaceWriter::~InterfaceWriter()
+{
+  if (impl_) {
+    // Errors cannot propagate from a destructor; close() is expected to be called explicitly.
+    if (impl_->viewer) (void)close();
+    delete impl_;
+    impl_ = nullptr;
+  }
+}
+
+PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const std::string &dir)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!impl_ || !impl_->viewer, comm, PETSC_ERR_ARG_WRONGSTATE,
+             "InterfaceWriter::open called twice");
+  delete impl_;
+  impl_ = new Impl;
+  Impl &im = *impl_;
+  im.comm = comm;
+  im.scene = &scene;
+  im.dim = scene.dim;
+  im.enabled = !scene.interfaces.empty();
+  if (!im.enabled) PetscFunctionReturn(0);
+  PetscCheck(im.dim == 2 || im.dim == 3, comm, PETSC_ERR_SUP,
+             "InterfaceWriter: dimension %d not supported", im.dim);
+  PetscCall(xdmf::createDirectory(comm, dir, kWho));
+  const std::string prefix = dir.empty() ? std::string("interfaces") : dir + "/interfaces";
+  im.xmfPath = prefix + ".xmf";
+  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(), FILE_MODE_WRITE, &im.viewer));
+  PetscCall(im.writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceWriter::write(double time, const InterfaceMechanics &mech,
+                                      Vec local_solution)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(impl_, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE,
+             "InterfaceWriter::write called before open");
+  Impl &im = *impl_;
+  if (!im.enabled) PetscFunctionReturn(0);
+  PetscCheck(im.viewer, im.comm, PETSC_ERR_ARG_WRONGSTATE, "InterfaceWriter::write after close");
+
+  std::vector<CellRecord> cells;
+  std::vector<PointRecord> points;
+  PetscCall(im.collect(mech, local_solution, cells, points));
+  if (!im.mesh_written) {
+    PetscCall(im.writeMesh(cells, points));
+  } else {
+    int same = cells.size() == im.local_cells.size(), all;
+    for (size_t i = 0; same && i < cells.size(); ++i)
+      same = cells[i].cell == im.local_cells[i] &&
+             static_cast<int>(cells[i].count) == im.local_point_count[i];
+    PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, im.comm));
+    PetscCheck(all, im.comm, PETSC_ERR_ARG_WRONGSTATE,
+               "InterfaceWriter: the interface cells changed since the first write");
+  }
+  if (im.num_cells > 0) {
+    const int t = im.dim - 1;
+    std::vector<Values> cv, pv;
+    for (const CellRecord &c : cells)
+      cv.push_back(cellValues(c, points, t));
+    for (const PointRecord &p : points)
+      pv.push_back(pointValues(p, t));
+    const size_t step = im.times.size();
+    PetscCall(im.writeValues("cells", cv, step, time));
+    PetscCall(im.writeValues("points", pv, step, time));
+    PetscCall(PetscViewerFlush(im.viewer));
+  }
+  im.times.push_back(time);
+  PetscCall(im.writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceWriter::close()
+{
+  PetscFunctionBeginUser;
+  if (!impl_ || !impl_->viewer) PetscFunctionReturn(0);
+  PetscCall(PetscViewerDestroy(&impl_->viewer));
+  PetscCall(impl_->writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam

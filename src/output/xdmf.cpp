@@ -1,0 +1,131 @@
+// Helpers shared by the HDF5 + XDMF writers (see xdmf.hpp).
+#include "xdmf.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+namespace poroseam::xdmf {
+
+std::string formatDouble(double x)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.17g", x);
+  return buf;
+}
+
+PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char *who)
+{
+  PetscMPIInt rank;
+  int ok = 1;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0 && !dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) ok = 0;
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "%s: cannot create directory %s", who, dir.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::string &text,
+                           const char *who)
+{
+  PetscMPIInt rank;
+  int ok = 1;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    const std::string tmp = path + ".tmp";
+    {
+      std::ofstream out(tmp, std::ios::trunc);
+      out << text;
+      out.close();
+      if (!out) ok = 0;
+    }
+    if (ok) {
+      std::error_code ec;
+      std::filesystem::rename(tmp, path, ec);
+      if (ec) ok = 0;
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "%s: cannot write %s", who, path.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeReals(PetscViewer viewer, MPI_Comm comm, const std::string &group,
+                          const std::string &name, PetscInt bs,
+                          const std::vector<PetscScalar> &values, const double *time)
+{
+  Vec v;
+  PetscScalar *a;
+  const PetscInt n = static_cast<PetscInt>(values.size());
+
+  PetscFunctionBeginUser;
+  PetscCheck(bs >= 1 && n % bs == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "%s/%s: %" PetscInt_FMT " values for block size %" PetscInt_FMT, group.c_str(),
+             name.c_str(), n, bs);
+  PetscCall(VecCreate(comm, &v));
+  PetscCall(VecSetSizes(v, n, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(v, bs));
+  PetscCall(VecSetType(v, VECMPI));
+  PetscCall(PetscObjectSetName((PetscObject)v, name.c_str()));
+  PetscCall(VecGetArray(v, &a));
+  std::copy(values.begin(), values.end(), a);
+  PetscCall(VecRestoreArray(v, &a));
+  PetscCall(PetscViewerHDF5PushGroup(viewer, group.c_str()));
+  PetscCall(VecView(v, viewer));
+  PetscCall(PetscViewerHDF5PopGroup(viewer));
+  if (time) {
+    const std::string path = group + "/" + name;
+    PetscReal t = static_cast<PetscReal>(*time);
+
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, path.c_str(), "time", PETSC_REAL, &t));
+  }
+  PetscCall(VecDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeInts(PetscViewer viewer, MPI_Comm comm, const std::string &group,
+                         const std::string &name, PetscInt bs, const std::vector<PetscInt> &values,
+                         const double *time)
+{
+  IS is;
+  const PetscInt n = static_cast<PetscInt>(values.size());
+
+  PetscFunctionBeginUser;
+  PetscCheck(bs >= 1 && n % bs == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "%s/%s: %" PetscInt_FMT " values for block size %" PetscInt_FMT, group.c_str(),
+             name.c_str(), n, bs);
+  PetscCall(ISCreateGeneral(comm, n, values.data(), PETSC_COPY_VALUES, &is));
+  PetscCall(ISSetBlockSize(is, bs));
+  PetscCall(PetscObjectSetName((PetscObject)is, name.c_str()));
+  PetscCall(PetscViewerHDF5PushGroup(viewer, group.c_str()));
+  PetscCall(ISView(is, viewer));
+  PetscCall(PetscViewerHDF5PopGroup(viewer));
+  if (time) {
+    const std::string path = group + "/" + name;
+    PetscReal t = static_cast<PetscReal>(*time);
+
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, path.c_str(), "time", PETSC_REAL, &t));
+  }
+  PetscCall(ISDestroy(&is));
+  PetscFunctionReturn(0);
+}
+
+std::string dataItem(const std::string &dims, bool integer, const std::string &h5file,
+                     const std::string &path)
+{
+  return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + (integer ? "Int" : "Float") +
+         "\" Precision=\"" + std::to_string(integer ? sizeof(PetscInt) : sizeof(double)) +
+         "\" Format=\"HDF\">" + h5file + ":" + path + "</DataItem>";
+}
+
+} // namespace poroseam::xdmf

@@ -1,0 +1,42 @@
+// Helpers shared by the HDF5 + XDMF writers (bulk fields, interfaces): collective datasets
+// written through PETSc's HDF5 viewer, and the XDMF index that rank 0 replaces atomically.
+// Internal to src/output.
+#pragma once
+
+#include <petscis.h>
+#include <petscvec.h>
+#include <petscviewerhdf5.h>
+#include <string>
+#include <vector>
+
+namespace poroseam::xdmf {
+
+/// %.17g: a double that reads back exactly.
+std::string formatDouble(double x);
+
+/// Rank 0 creates `dir` (and parents); collective. `who` prefixes the error message.
+PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char *who);
+
+/// Rank 0 writes `text` to `path` + ".tmp" and renames it to `path`, so that a reader never
+/// sees a partial file; collective (the outcome is broadcast). Only rank 0's text is used.
+PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::string &text,
+                           const char *who);
+
+/// Collective: writes the rank-ordered concatenation of every rank's `values` (bs values per
+/// row) as `<group>/<name>`, shape [N] when bs == 1, else [N, bs] (PETSc Vec, doubles). With
+/// `time` given, the dataset carries the attribute "time".
+PetscErrorCode writeReals(PetscViewer viewer, MPI_Comm comm, const std::string &group,
+                          const std::string &name, PetscInt bs,
+                          const std::vector<PetscScalar> &values, const double *time);
+
+/// Same for PetscInt values (PETSc IS): shape [N, bs], also when bs == 1 (PETSc's ISView).
+PetscErrorCode writeInts(PetscViewer viewer, MPI_Comm comm, const std::string &group,
+                         const std::string &name, PetscInt bs, const std::vector<PetscInt> &values,
+                         const double *time = nullptr);
+
+/// `<DataItem Dimensions="dims" NumberType=... Precision=... Format="HDF">file:path</DataItem>`
+/// (no indentation, no newline). `integer` selects Int with sizeof(PetscInt), else Float 8.
+std::string dataItem(const std::string &dims, bool integer, const std::string &h5file,
+                     const std::string &path);
+
+} // namespace poroseam::xdmf
