@@ -12,6 +12,11 @@ Cases (--case):
             without cut-back; prints the largest Newton count, which must stay <= 4.
   opening   the block is lifted by 2e-5 m instead: zero traction, and the gap measured by
             probes on both faces equals the applied separation.
+  oblique   3D (shear_3d.opts): slide along 30 degrees to 4x the onset, then turn to 120
+            degrees: the force vector follows the vector return mapping
+            tau_trial = tau_n + K_T (g_T - g_T,n), tau = mu p'_N tau_trial / |tau_trial| when
+            |tau_trial| > mu p'_N; on the first leg |F_T| = mu F_N and F_T is parallel to the
+            slip increment.
 The expectation uses the gaps measured by probes on both faces (the bodies take K_N H / E =
 1e-4 of the imposed closure). Tolerance: 1e-8 relative to mu F_N.
 """
@@ -43,12 +48,63 @@ def return_mapping(gt, pn):
     return np.array(out)
 
 
+def return_mapping_2(gt, pn):
+    """Vector version of return_mapping: gt is (steps, 2)."""
+    tau, g_prev, out = np.zeros(2), np.zeros(2), []
+    for g, p in zip(gt, pn):
+        trial = tau + KT * (g - g_prev)
+        norm = np.linalg.norm(trial)
+        tau = trial if norm <= MU * p else MU * p * trial / norm
+        g_prev = g
+        out.append(tau.copy())
+    return np.array(out)
+
+
+def oblique(args):
+    scene = os.path.join(HERE, "shear_3d.opts")
+    out = common.output_dir(f"interface_oblique_{args.integration}_np{args.ranks}")
+    a1, a2 = np.radians(30.0), np.radians(120.0)
+    times = [0, 8, 12]
+    corner = 4 * ONSET * np.array([np.cos(a1), np.sin(a1)])
+    end = corner + 2 * ONSET * np.array([np.cos(a2), np.sin(a2)])
+    extra = ["-ts_max_time", times[-1], "-interface_contact_integration", args.integration,
+             "-probe_below", "0.5,0.5,0.4999999", "-probe_above", "0.5,0.5,0.5000001"]
+    for k, comp in enumerate("xy"):
+        table = os.path.join(out, f"u{comp}.csv")
+        with open(table, "w") as f:
+            f.write("time,factor\n")
+            for t, v in zip(times, [0.0, corner[k], end[k]]):
+                f.write(f"{t},{v!r}\n")
+        extra += [f"-bc_top_u{comp}_table", table]
+    common.run(scene, out, extra, ranks=args.ranks)
+    ts = common.read_timeseries(out)
+    chk = common.Checks(f"interface oblique sliding 3D ({args.integration}, {args.ranks} rank(s))")
+    gt = np.stack([ts["above.ux"] - ts["below.ux"], ts["above.uy"] - ts["below.uy"]], axis=1)
+    pn = -KN * (ts["above.uz"] - ts["below.uz"])
+    expected = return_mapping_2(gt, pn)
+    force = np.stack([ts["contact.Fx"], ts["contact.Fy"]], axis=1)  # area 1 m2
+    chk.check("max |F_T - A tau_exact| / (mu F_N)", np.max(np.linalg.norm(force - expected, axis=1)) / (MU * PN), 1e-8)
+    chk.check("max |F_z + F_N| / F_N", np.max(np.abs(ts["contact.Fz"] + pn)) / PN, 1e-8)
+    first = (ts["time"] > 3) & (ts["time"] <= 8)  # slipping along the first leg
+    ft = force[first]
+    chk.check("first leg: max | |F_T| - mu F_N | / (mu F_N)", np.max(np.abs(np.linalg.norm(ft, axis=1) - MU * pn[first])) / (MU * PN), 1e-8)
+    direction = np.array([np.cos(a1), np.sin(a1)])
+    cross = np.abs(ft[:, 0] * direction[1] - ft[:, 1] * direction[0]) / np.linalg.norm(ft, axis=1)
+    chk.check("first leg: sin(angle between F_T and the slip increment)", np.max(cross), 1e-8)
+    turned = force[-1] / np.linalg.norm(force[-1])
+    print(f"  force direction at the end {np.degrees(np.arctan2(turned[1], turned[0])):.2f} deg "
+          f"(slip turned to 120 deg); Newton max {int(ts['newton_its'].max())}")
+    chk.finish()
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--case", choices=("ramp", "reversals", "opening"), required=True)
+    ap.add_argument("--case", choices=("ramp", "reversals", "opening", "oblique"), required=True)
     ap.add_argument("--integration", choices=("gauss", "nodal"), default="gauss")
     ap.add_argument("--ranks", type=int, default=1)
     args = ap.parse_args()
+    if args.case == "oblique":
+        return oblique(args)
     scene = os.path.join(HERE, "shear_2d.opts")
     out = common.output_dir(f"interface_{args.case}_{args.integration}_np{args.ranks}")
     table = os.path.join(out, "ux.csv")

@@ -24,6 +24,7 @@ struct Case {
   const char *integration;
   double gap[3]; // block displacement relative to the base (x, y[, z]); normal is the last axis
   physics::ContactState expected;
+  double size_factor = 1.0; // gmsh -clscale: coarse in 3D, where the dense check costs n^2
 };
 
 PetscErrorCode setOption(const char *name, const std::string &value)
@@ -55,7 +56,7 @@ PetscErrorCode compare(const Case &c, double *relative_error, int *states)
   PetscCall(setOption("-interface_contact_friction", "0.5"));
   PetscCall(setOption("-interface_contact_integration", c.integration));
   PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
-  PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, 1.0,
+  PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
                          testing::TempDir() + "poroseam_mesh", &dm, &names, &dim));
   PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
   PetscCall(splitInterfaces(&dm, scene));
@@ -209,5 +210,30 @@ INSTANTIATE_TEST_SUITE_P(States, InterfaceJacobian,
                                                 "block_on_base_2d.geo",
                                                 "gauss",
                                                 {1e-5, 1e-6, 0},
-                                                physics::ContactState::open}),
+                                                physics::ContactState::open},
+                                           // 3D on a coarse mesh: the dense check costs n^2.
+                                           Case{"stick3d_gauss",
+                                                "block_on_base_3d.geo",
+                                                "gauss",
+                                                {1e-7, -5e-8, -1e-6},
+                                                physics::ContactState::stick,
+                                                12.0},
+                                           Case{"slip3d_gauss",
+                                                "block_on_base_3d.geo",
+                                                "gauss",
+                                                {1e-5, -7e-6, -1e-6},
+                                                physics::ContactState::slip,
+                                                12.0},
+                                           Case{"slip3d_nodal_tet",
+                                                "block_on_base_3d_tet.geo",
+                                                "nodal",
+                                                {-6e-6, 9e-6, -1e-6},
+                                                physics::ContactState::slip,
+                                                12.0},
+                                           Case{"open3d_gauss",
+                                                "block_on_base_3d.geo",
+                                                "gauss",
+                                                {1e-5, 2e-6, 1e-6},
+                                                physics::ContactState::open,
+                                                12.0}),
                          [](const auto &info) { return std::string(info.param.name); });
