@@ -24,13 +24,33 @@ from interface_reader import read_interfaces  # noqa: E402
 Q, E = 1e5, 1e8
 
 
+def parts(args):
+    """Patch test with the contact in two parts: each carries half of q A, exactly."""
+    scene = os.path.join(HERE, "patch_2d.opts")
+    out = common.output_dir(f"patch_parts_np{args.ranks}")
+    common.run(scene, out, ["-mesh", "meshes/block_on_base_parts_2d.geo",
+                            "-interface_contact_surfaces", "contact_left,contact_right"], ranks=args.ranks)
+    ts = common.read_timeseries(out)
+    chk = common.Checks(f"interface forces per part, {args.ranks} rank(s)")
+    for part in ("contact_left", "contact_right"):
+        chk.check(f"|{part}.Fy + q A / 2| / (q A / 2)", abs(ts[f"contact.{part}.Fy"][-1] + Q / 2) / (Q / 2), 1e-8)
+    total = ts["contact.contact_left.Fy"][-1] + ts["contact.contact_right.Fy"][-1]
+    chk.check("|sum of parts - total| / q A", abs(total - ts["contact.Fy"][-1]) / Q, 1e-12)
+    chk.finish()
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--dim", type=int, choices=(2, 3), default=2)
     ap.add_argument("--ranks", type=int, default=1)
+    ap.add_argument("--mesh", default=None, help="another mesh of the same geometry (triangles, tetrahedra)")
+    ap.add_argument("--parts", action="store_true",
+                    help="the contact in two named parts: forces per part and their sum")
     args = ap.parse_args()
+    if args.parts:
+        return parts(args)
     scene = os.path.join(HERE, f"patch_{args.dim}d.opts")
-    chk = common.Checks(f"interface patch test {args.dim}D, {args.ranks} rank(s)")
+    chk = common.Checks(f"interface patch test {args.dim}D, {args.mesh or 'default mesh'}, {args.ranks} rank(s)")
     worst = 0.0
     for rule in ("gauss", "nodal"):
         for ratio in (1e-2, 1.0, 1e2, 1e4):
@@ -39,6 +59,8 @@ def main():
             extra = ["-interface_contact_integration", rule, "-interface_contact_KN", kn,
                      "-interface_contact_KT", kn, "-region_base_nu", 0.3, "-region_block_nu", 0.3,
                      "-output_fields_every", 1]
+            if args.mesh:
+                extra += ["-mesh", args.mesh]
             common.run(scene, out, extra, ranks=args.ranks)
             data = read_interfaces(out)
             p = data.point_fields[-1]["contact_pressure_effective"]
