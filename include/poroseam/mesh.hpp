@@ -16,8 +16,9 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
                             const std::string &work_dir, DM *dm, std::vector<PhysicalName> *names,
                             int *dim);
 
-/// Distributes the mesh (partitioner from -petscpartitioner_type, ptscotch by default) and
-/// replaces *dm by the distributed one. Labels travel with the points.
+/// Distributes the mesh and replaces *dm by the distributed one; labels travel with the
+/// points. The partitioner comes from -partitioner ptscotch|metis|simple (default ptscotch;
+/// metis keeps cohesive cells with their bulk neighbours, see partition.hpp).
 PetscErrorCode distributeMesh(DM *dm);
 
 /// Stops with a clear error when a bulk cell has a non-positive Jacobian determinant

@@ -1,6 +1,7 @@
 #include "poroseam/collective_check.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/mesh.hpp"
+#include "poroseam/partition.hpp"
 #include "poroseam/reference_element.hpp"
 
 #include <cstdlib>
@@ -131,15 +132,38 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
 
 PetscErrorCode distributeMesh(DM *dm)
 {
-  PetscPartitioner part;
   DM dist = nullptr;
+  MPI_Comm comm;
+  PetscMPIInt size;
+  PartitionerKind kind;
+  std::string kindName;
+  PetscBool report = PETSC_FALSE;
   PetscFunctionBeginUser;
-  PetscCall(DMPlexGetPartitioner(*dm, &part));
-  PetscCall(PetscPartitionerSetFromOptions(part));
+  PetscCall(PetscObjectGetComm((PetscObject)*dm, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(readPartitionerOption(comm, &kind, &kindName));
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-partitioner_report", &report, nullptr));
+  PetscCall(configurePartitioner(*dm, kind));
   PetscCall(DMPlexDistribute(*dm, 0, nullptr, &dist));
   if (dist) {
     PetscCall(DMDestroy(dm));
     *dm = dist;
+  }
+  if (report) { // cells per rank and cohesive cells apart from a bulk neighbour
+    PetscInt cStart, cEnd, separated, total;
+    PetscCall(DMPlexGetHeightStratum(*dm, 0, &cStart, &cEnd));
+    PetscCall(countSeparatedCohesiveCells(*dm, &separated, &total));
+    long mine = (long)(cEnd - cStart);
+    std::vector<long> cells(size, 0);
+    PetscCallMPI(MPI_Gather(&mine, 1, MPI_LONG, cells.data(), 1, MPI_LONG, 0, comm));
+    std::ostringstream line;
+    line << "partition: " << kindName << ", " << size << " rank" << (size > 1 ? "s" : "")
+         << ", cells per rank";
+    for (long n : cells)
+      line << ' ' << n;
+    line << "; cohesive cells with a bulk neighbour on another rank: " << separated << " of "
+         << total << '\n';
+    PetscCall(PetscPrintf(comm, "%s", line.str().c_str()));
   }
   PetscFunctionReturn(0);
 }

@@ -34,7 +34,11 @@ ContactResponse contactResponse(const ContactParameters &p, const ContactInitial
   }
   const double norm = std::sqrt(norm2);
   const double limit = p.friction * pressure;
-  if (norm <= limit) {
+  // A point that slipped in the last step starts the next one exactly on the yield surface,
+  // where round-off would pick the branch (and a different Newton path on another number of
+  // ranks). There it counts as sticking, the elastic predictor, within a 1e-12 margin: the
+  // stick tangent serves load reversals far better than the slip one.
+  if (norm <= limit * (1.0 + 1e-12)) {
     r.state = ContactState::stick;
     for (int k = 0; k < nt; ++k) {
       r.shear[k] = trial[k];

@@ -46,7 +46,8 @@ TEST(Contact, ShearRampStickThenSlipThenElasticReversal)
     auto r = at(h, 1, 0.0, gt);
     const double expected = std::min(1e9 * gt, limit);
     EXPECT_NEAR(r.shear[0], expected, 1e-9 * limit) << "step " << step;
-    EXPECT_EQ(r.state, 1e9 * gt <= limit ? ContactState::stick : ContactState::slip);
+    // On the yield surface itself (step 20) the point counts as sticking.
+    EXPECT_EQ(r.state, 1e9 * gt <= 1.000001 * limit ? ContactState::stick : ContactState::slip);
     h = r.updated; // converged: commit
     tau_max = r.shear[0];
   }
