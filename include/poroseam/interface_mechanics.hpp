@@ -1,6 +1,8 @@
-// Mechanical assembly of zero-thickness interfaces on cohesive cells: the gap between the
-// paired faces at integration points, the contact/friction law (physics/contact), and the
-// integration-point history that is committed only after a converged step.
+// Assembly of zero-thickness hydro-mechanical interfaces on cohesive cells: the gap between
+// the paired faces at integration points, the contact/friction law (physics/contact), the
+// three-node flow (physics/interface_flow) with the interface pressure p3 on the lateral
+// edges, their couplings (p'_N + p3 on both faces, aperture and storage from the opening),
+// and the integration-point history that is committed only after a converged step.
 #pragma once
 
 #include "poroseam/contact.hpp"
@@ -24,8 +26,24 @@ struct InterfacePointState {
   double gap_normal = 0.0; ///< g_N [m]
   double gap_tangential[2] = {0, 0};
   double opening = 0.0;           ///< mechanical opening o [m]
-  double traction[3] = {0, 0, 0}; ///< on side 1 from side 2, global components [Pa]
+  double traction[3] = {0, 0, 0}; ///< on side 1 from side 2, global, p3 included [Pa]
   physics::ContactResponse response;
+  // Hydraulics (interfaces with flow only; zero otherwise).
+  bool flow = false;
+  double interface_pressure = 0.0;         ///< p3 [Pa]
+  double aperture = 0.0;                   ///< h = D0 + o [m]
+  double aperture_rate = 0.0;              ///< dh/dt [m/s] (backward Euler)
+  double longitudinal_flux[3] = {0, 0, 0}; ///< q_l, global [m2/s]
+  double transversal_flux1 = 0.0;          ///< f_1 = T_1 (p1 - p3), side 1 -> inner [m/s]
+  double transversal_flux2 = 0.0;          ///< f_2 = T_2 (p3 - p2), inner -> side 2 [m/s]
+};
+
+/// Rates for an evaluation: local vector of d/dt of the unknowns and the step dt (backward
+/// Euler: the opening rate is (o(g) - o(g - dt dg/dt)) / dt). `rate` may be null (no flow
+/// terms are then evaluated: mechanics only, e.g. for committing history).
+struct InterfaceRates {
+  Vec rate = nullptr;
+  double dt = 0.0;
 };
 
 class InterfaceMechanics {
@@ -36,26 +54,33 @@ public:
   PetscErrorCode setup(DM dm, const Scene &scene, InitialStress initial_stress);
   bool empty() const { return cells_.empty(); }
 
-  /// Adds the interface forces to the local residual f (ADD_ALL_VALUES).
-  PetscErrorCode residual(Vec local, Vec f) const;
-  /// Adds the consistent (unsymmetric) tangent to J (no assembly here).
-  PetscErrorCode jacobian(Vec local, Mat J) const;
+  /// Adds the interface terms to the local residual f (ADD_ALL_VALUES); the mass balances
+  /// are multiplied by mass_scale like the bulk's.
+  PetscErrorCode residual(Vec local, const InterfaceRates &rates, double mass_scale, Vec f) const;
+  /// Adds the consistent (unsymmetric) tangent dF/dx + shift dF/dxdot to J (no assembly).
+  PetscErrorCode jacobian(Vec local, const InterfaceRates &rates, double shift, double mass_scale,
+                          Mat J) const;
   /// Stores the history of the converged state `local` (call after an accepted step only).
   PetscErrorCode commit(Vec local);
 
   /// Visits every integration point of this rank with its state at `local`.
-  PetscErrorCode visit(Vec local, const std::function<void(int iface, int surface, PetscInt cell,
-                                                           const InterfacePointState &)> &f) const;
+  PetscErrorCode visit(Vec local, const InterfaceRates &rates,
+                       const std::function<void(int iface, int surface, PetscInt cell,
+                                                const InterfacePointState &)> &f) const;
 
 private:
   struct Cell {
     PetscInt cell;
     int iface, surface, element;
-    std::vector<int> side1_slot, side2_slot; ///< closure slots of paired vertices
+    /// Closure offsets per side-1 face vertex a: first displacement component on side 1 and
+    /// on side 2, pressure on side 1 and 2 (-1: that side is not porous), p3 (-1: no flow).
+    std::vector<int> u1, u2, p1, p2, p3;
+    bool flow = false, porous1 = false, porous2 = false;
     double frame[3][3];
     size_t history; ///< first entry in the history arrays
   };
-  template <class Kernel> PetscErrorCode loop(Vec local, Kernel &&kernel) const;
+  template <class Kernel>
+  PetscErrorCode loop(Vec local, const InterfaceRates &rates, Kernel &&kernel) const;
 
   DM dm_ = nullptr;
   const Scene *scene_ = nullptr;

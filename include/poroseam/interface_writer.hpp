@@ -35,7 +35,8 @@ public:
   PetscErrorCode open(MPI_Comm comm, const Scene &scene, const std::string &dir);
   /// Appends one time: the interface state at `local_solution` (a local vector of the
   /// solution DM with boundary values inserted). Returns at once without interfaces.
-  PetscErrorCode write(double time, const InterfaceMechanics &mech, Vec local_solution);
+  PetscErrorCode write(double time, const InterfaceMechanics &mech, Vec local_solution,
+                       const InterfaceRates &rates = InterfaceRates{});
   /// Closes the HDF5 file and finishes the XDMF index (also called by the destructor).
   PetscErrorCode close();
 

@@ -1,7 +1,9 @@
 // Which unknowns exist where: the PetscSection of the solution, built from the scene.
 // Field 0 "displacement" (dim components) lives on every vertex; field 1 "pressure" only on
-// vertices of porous regions, and only when the scene is not drained. Dirichlet conditions are
-// section constraints, so constrained values never enter the global vector.
+// vertices of porous regions, and only when the scene is not drained; field 2
+// "interface_pressure" only on the lateral edges of cohesive cells of interfaces with flow.
+// Dirichlet conditions are section constraints, so constrained values never enter the global
+// vector.
 #pragma once
 
 #include "poroseam/scene.hpp"
@@ -10,11 +12,15 @@
 namespace poroseam {
 
 constexpr int kDisplacementField = 0;
-constexpr int kPressureField = 1;
+constexpr int kPressureField = 1;          ///< present when there is any pressure at all
+constexpr int kInterfacePressureField = 2; ///< present when an interface has flow
 
 /// Label names set on the serial mesh before distribution, so that every rank agrees on the
 /// layout of shared points.
 constexpr const char *kPorousLabel = "porous closure";
+/// Lateral edges (one per split vertex pair) of cohesive cells of interfaces with flow: the
+/// home of the interface pressure p3, the paper's middle nodes.
+constexpr const char *kInterfacePressureLabel = "interface pressure";
 std::string boundaryLabelName(const std::string &boundary);
 
 /// Before distribution: marks the closure of porous cells and of every scene boundary.

@@ -7,8 +7,9 @@
 
 namespace poroseam {
 
-/// If the PC of the TS's Newton solver is PCFIELDSPLIT, defines one split per field
-/// ("displacement", "pressure") and attaches the rigid-body modes to the displacement split.
+/// If the PC of the TS's Newton solver is PCFIELDSPLIT, defines one split per non-empty field
+/// ("displacement", "pressure", "interface_pressure") and attaches the rigid-body modes to the
+/// displacement split.
 /// Call after TSSetFromOptions.
 PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene);
 

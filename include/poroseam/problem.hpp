@@ -21,6 +21,9 @@ struct ResidualMode {
   /// Include applied tractions and fluxes. Without them the residual at a vertex is the
   /// force (and water rate) the surroundings exert on the body there: reactions and outflows.
   bool include_loads = true;
+  /// The step being solved (backward Euler), for rates of non-linear quantities such as
+  /// the interface opening; 0 when no step is involved.
+  double dt = 0.0;
 };
 
 class Problem {

@@ -35,7 +35,7 @@ struct Region {
   bool porous() const { return model == MaterialModel::biot; }
 };
 
-enum class BcKind { displacement, pressure, traction, flux };
+enum class BcKind { displacement, pressure, traction, flux, interface_pressure };
 
 struct BoundaryCondition {
   std::string boundary; ///< Gmsh physical name
@@ -45,7 +45,11 @@ struct BoundaryCondition {
   std::vector<double> value; ///< magnitude: 1 entry, or dim entries for a traction
   TimeFunction time = TimeFunction::step();
   std::string option; ///< the option that defined it, for messages
-  bool dirichlet() const { return kind == BcKind::displacement || kind == BcKind::pressure; }
+  bool dirichlet() const
+  {
+    return kind == BcKind::displacement || kind == BcKind::pressure ||
+           kind == BcKind::interface_pressure;
+  }
 };
 
 struct Boundary {
@@ -64,6 +68,11 @@ struct Interface {
   double tangential_stiffness = 0.0; ///< K_T [Pa/m]
   double friction = 0.0;             ///< mu [-]
   bool nodal_integration = false;    ///< Newton-Cotes/Lobatto points at the vertices
+  // Hydraulics (three-node scheme, DESIGN 3.2): present only when flow is enabled.
+  bool flow = false;            ///< interface pressure p3 and its flows exist
+  double aperture0 = 0.0;       ///< D0 [m], hydraulic aperture of a closed interface
+  double transmissivity1 = 0.0; ///< T1 [m/(Pa s)], side 1 <-> inner (0: impervious)
+  double transmissivity2 = 0.0; ///< T2 [m/(Pa s)], inner <-> side 2 (0: impervious)
 };
 
 struct Probe {
@@ -95,6 +104,7 @@ struct Scene {
   std::vector<Probe> probes;
 
   bool hasPressure() const;
+  bool hasInterfacePressure() const;   ///< some interface has flow
   int regionIndexOfTag(int tag) const; ///< -1 when no region has this tag
 };
 

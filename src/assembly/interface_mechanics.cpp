@@ -1,6 +1,7 @@
 #include "poroseam/interface_mechanics.hpp"
 
 #include "poroseam/collective_check.hpp"
+#include "poroseam/interface_flow.hpp"
 #include "poroseam/interfaces.hpp"
 
 #include <cmath>
@@ -124,31 +125,70 @@ PetscErrorCode InterfaceMechanics::setup(DM dm, const Scene &scene, InitialStres
     cell.element = elementOf[key];
     const ReferenceElement &e = elements_[cell.element];
 
-    // Closure slots of the side-1 face's vertices (in the face's own order, which the
-    // reference element follows) and of their partners on side 2 (same coordinates).
-    std::vector<PetscInt> all, v1, v2;
-    PetscCall(closureVertices(dm, c, all));
+    // Closure offsets. PETSc orders a closure field by field, point by point: all
+    // displacements, then pressures, then interface pressures (lateral edges).
+    PetscSection sec;
+    PetscCall(DMGetLocalSection(dm, &sec));
+    PetscInt numFields;
+    PetscCall(PetscSectionGetNumFields(sec, &numFields));
+    std::map<PetscInt, int> offset[3];
+    std::vector<PetscInt> lateral;
+    {
+      PetscInt n, *pts = nullptr;
+      PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
+      int running = 0;
+      for (PetscInt f = 0; f < numFields; ++f)
+        for (PetscInt k = 0; k < n; ++k) {
+          PetscInt dof;
+          PetscCall(PetscSectionGetFieldDof(sec, pts[2 * k], f, &dof));
+          if (dof) offset[f][pts[2 * k]] = running;
+          running += (int)dof;
+        }
+      for (PetscInt k = 0; k < n; ++k) {
+        DMPolytopeType pt;
+        PetscCall(DMPlexGetCellType(dm, pts[2 * k], &pt));
+        if (pt == DM_POLYTOPE_POINT_PRISM_TENSOR) lateral.push_back(pts[2 * k]);
+      }
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
+    }
+    auto offsetOf = [&](int field, PetscInt point) {
+      if (field >= numFields) return -1;
+      const auto it = offset[field].find(point);
+      return it == offset[field].end() ? -1 : it->second;
+    };
+    // Side-1 face vertices in the face's own order (the reference element follows it), their
+    // partners on side 2 (same coordinates) and the lateral edge joining each pair.
+    std::vector<PetscInt> v1, v2;
     PetscCall(closureVertices(dm, face1, v1));
     PetscCall(closureVertices(dm, face2, v2));
-    auto slotOf = [&](PetscInt v) {
-      for (size_t k = 0; k < all.size(); ++k)
-        if (all[k] == v) return (int)k;
-      return -1;
-    };
     std::vector<double> x1(v1.size() * dim_);
+    cell.flow = in.flow;
+    cell.porous1 = cell.porous2 = true;
     for (size_t a = 0; a < v1.size(); ++a) {
       PetscCall(vertexCoordinates(dm, v1[a], dim_, &x1[a * dim_]));
-      cell.side1_slot.push_back(slotOf(v1[a]));
-      int partner = -1;
+      PetscInt partner = -1;
       double best = 1e300;
       for (size_t b = 0; b < v2.size(); ++b) {
         double y[3], d2 = 0.0;
         PetscCall(vertexCoordinates(dm, v2[b], dim_, y));
         for (int d = 0; d < dim_; ++d)
           d2 += (y[d] - x1[a * dim_ + d]) * (y[d] - x1[a * dim_ + d]);
-        if (d2 < best) best = d2, partner = slotOf(v2[b]);
+        if (d2 < best) best = d2, partner = v2[b];
       }
-      cell.side2_slot.push_back(partner);
+      cell.u1.push_back(offsetOf(0, v1[a]));
+      cell.u2.push_back(offsetOf(0, partner));
+      cell.p1.push_back(offsetOf(1, v1[a]));
+      cell.p2.push_back(offsetOf(1, partner));
+      cell.porous1 = cell.porous1 && cell.p1.back() >= 0;
+      cell.porous2 = cell.porous2 && cell.p2.back() >= 0;
+      int p3 = -1;
+      for (PetscInt edge : lateral) {
+        const PetscInt *econe;
+        PetscCall(DMPlexGetCone(dm, edge, &econe));
+        if (econe[0] == v1[a] || econe[1] == v1[a]) p3 = offsetOf(2, edge);
+      }
+      cell.p3.push_back(p3);
+      cell.flow = cell.flow && p3 >= 0;
     }
     // Local frame from cone[0]'s vertex order and the orientation found before distribution.
     {
@@ -215,7 +255,56 @@ PetscErrorCode InterfaceMechanics::setup(DM dm, const Scene &scene, InitialStres
   PetscFunctionReturn(0);
 }
 
-template <class Kernel> PetscErrorCode InterfaceMechanics::loop(Vec local, Kernel &&kernel) const
+/// Per-point quantities the flow Jacobian needs besides the reported state.
+struct FlowPoint {
+  double grad_phi[4][3]; ///< surface gradients of the face's shape functions
+  double grad_p3[3];     ///< surface gradient of p3
+  double gravity_t[3];   ///< tangential gravity
+  double conductivity = 0.0, d_conductivity = 0.0;
+  bool opening_active = false; ///< d o / d g_N = 1
+};
+
+namespace {
+
+/// Surface gradients grad_s phi_a = J (J^T J)^-1 grad_xi phi_a of a face element (dim - 1)
+/// in space `dim`, at quadrature point q.
+void surfaceGradients(const ReferenceElement &e, const double *x, int dim, int q, double g[4][3])
+{
+  const int m = e.dim, nv = e.num_vertices;
+  const double *dphi = &e.basis_derivatives[q * nv * m];
+  double J[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  for (int a = 0; a < nv; ++a)
+    for (int r = 0; r < dim; ++r)
+      for (int k = 0; k < m; ++k)
+        J[r][k] += x[a * dim + r] * dphi[a * m + k];
+  double G[2][2] = {{0, 0}, {0, 0}}, Ginv[2][2];
+  for (int k = 0; k < m; ++k)
+    for (int l = 0; l < m; ++l)
+      for (int r = 0; r < dim; ++r)
+        G[k][l] += J[r][k] * J[r][l];
+  if (m == 1)
+    Ginv[0][0] = 1.0 / G[0][0];
+  else {
+    const double det = G[0][0] * G[1][1] - G[0][1] * G[1][0];
+    Ginv[0][0] = G[1][1] / det, Ginv[1][1] = G[0][0] / det;
+    Ginv[0][1] = -G[0][1] / det, Ginv[1][0] = -G[1][0] / det;
+  }
+  for (int a = 0; a < nv; ++a)
+    for (int r = 0; r < 3; ++r) {
+      double v = 0.0;
+      if (r < dim)
+        for (int k = 0; k < m; ++k)
+          for (int l = 0; l < m; ++l)
+            v += J[r][k] * Ginv[k][l] * dphi[a * m + l];
+      g[a][r] = v;
+    }
+}
+
+} // namespace
+
+template <class Kernel>
+PetscErrorCode InterfaceMechanics::loop(Vec local, const InterfaceRates &rates,
+                                        Kernel &&kernel) const
 {
   PetscSection s, csec;
   Vec coords;
@@ -224,25 +313,29 @@ template <class Kernel> PetscErrorCode InterfaceMechanics::loop(Vec local, Kerne
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
   PetscCall(DMGetCoordinateSection(dm_, &csec));
   std::vector<double> x1;
+  const double g = scene_->gravity;
   for (const Cell &cell : cells_) {
     const Interface &in = scene_->interfaces[cell.iface];
     const physics::ContactParameters params{in.normal_stiffness, in.tangential_stiffness,
                                             in.friction};
     const ReferenceElement &e = elements_[cell.element];
-    PetscScalar *u = nullptr;
-    PetscInt n = 0;
+    const bool flow = cell.flow && rates.rate;
+    PetscScalar *u = nullptr, *udot = nullptr;
+    PetscInt n = 0, nd = 0;
     PetscCall(DMPlexVecGetClosure(dm_, s, local, cell.cell, &n, &u));
+    if (flow) PetscCall(DMPlexVecGetClosure(dm_, s, rates.rate, cell.cell, &nd, &udot));
     PetscScalar *xc = nullptr;
     PetscInt nc = 0;
     PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
     x1.resize(e.num_vertices * dim_);
     for (int a = 0; a < e.num_vertices; ++a)
       for (int d = 0; d < dim_; ++d)
-        x1[a * dim_ + d] = xc[cell.side1_slot[a] * dim_ + d];
+        x1[a * dim_ + d] = xc[cell.u1[a] + d];
     PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell.cell, &nc, &xc));
     for (int q = 0; q < e.num_quadrature; ++q) {
       const double *phi = &e.basis[q * e.num_vertices];
       InterfacePointState st;
+      FlowPoint fp;
       st.point = q;
       st.num_points = e.num_quadrature;
       st.face_vertices = e.num_vertices;
@@ -251,16 +344,17 @@ template <class Kernel> PetscErrorCode InterfaceMechanics::loop(Vec local, Kerne
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
           st.frame[i][j] = cell.frame[i][j];
-      double g[3] = {0, 0, 0};
+      double gap[3] = {0, 0, 0}, gap_rate[3] = {0, 0, 0};
       for (int a = 0; a < e.num_vertices; ++a)
         for (int d = 0; d < dim_; ++d) {
-          g[d] += phi[a] * (u[cell.side2_slot[a] * dim_ + d] - u[cell.side1_slot[a] * dim_ + d]);
+          gap[d] += phi[a] * (u[cell.u2[a] + d] - u[cell.u1[a] + d]);
+          if (flow) gap_rate[d] += phi[a] * (udot[cell.u2[a] + d] - udot[cell.u1[a] + d]);
           st.x[d] += phi[a] * x1[a * dim_ + d];
         }
       double local_gap[3] = {0, 0, 0};
       for (int k = 0; k < dim_; ++k)
         for (int d = 0; d < dim_; ++d)
-          local_gap[k] += cell.frame[k][d] * g[d];
+          local_gap[k] += cell.frame[k][d] * gap[d];
       st.gap_normal = local_gap[0];
       st.gap_tangential[0] = local_gap[1];
       st.gap_tangential[1] = local_gap[2];
@@ -270,14 +364,58 @@ template <class Kernel> PetscErrorCode InterfaceMechanics::loop(Vec local, Kerne
       st.opening = physics::mechanicalOpening(params, initial_[h], st.gap_normal);
       double T[3][3];
       globalTraction(st.response, cell.frame, dim_, st.traction, T);
-      PetscCall(kernel(cell, q, phi, st, (int)n));
+      if (flow) {
+        st.flow = true;
+        surfaceGradients(e, x1.data(), dim_, q, fp.grad_phi);
+        double p1 = 0.0, p2 = 0.0;
+        for (int d = 0; d < 3; ++d)
+          fp.grad_p3[d] = 0.0;
+        for (int a = 0; a < e.num_vertices; ++a) {
+          st.interface_pressure += phi[a] * u[cell.p3[a]];
+          for (int d = 0; d < dim_; ++d)
+            fp.grad_p3[d] += fp.grad_phi[a][d] * u[cell.p3[a]];
+          if (cell.porous1) p1 += phi[a] * u[cell.p1[a]];
+          if (cell.porous2) p2 += phi[a] * u[cell.p2[a]];
+        }
+        // Total normal pressure p'_N + p3 on both faces (friction uses p'_N only).
+        for (int d = 0; d < dim_; ++d)
+          st.traction[d] -= st.interface_pressure * cell.frame[0][d];
+        // Aperture, and its backward-Euler rate from the gap of the last step.
+        double gn_rate = 0.0;
+        for (int d = 0; d < dim_; ++d)
+          gn_rate += cell.frame[0][d] * gap_rate[d];
+        const double previous_opening =
+            physics::mechanicalOpening(params, initial_[h], st.gap_normal - rates.dt * gn_rate);
+        fp.opening_active = st.opening > 0.0;
+        st.aperture = in.aperture0 + st.opening;
+        st.aperture_rate = rates.dt > 0.0 ? (st.opening - previous_opening) / rates.dt : 0.0;
+        const auto c = physics::cubicLawConductivity(st.aperture, scene_->fluid_viscosity);
+        fp.conductivity = c.value;
+        fp.d_conductivity = c.d_aperture;
+        double gdotn = 0.0;
+        for (int d = 0; d < dim_; ++d)
+          gdotn += (d == dim_ - 1 ? -g : 0.0) * cell.frame[0][d];
+        for (int d = 0; d < 3; ++d)
+          fp.gravity_t[d] = (d == dim_ - 1 ? -g : 0.0) * (d < dim_) - gdotn * cell.frame[0][d];
+        physics::longitudinalFlux(c.value, dim_, fp.grad_p3, fp.gravity_t, scene_->fluid_density,
+                                  st.longitudinal_flux);
+        if (cell.porous1)
+          st.transversal_flux1 =
+              physics::transversalFlux(in.transmissivity1, p1, st.interface_pressure);
+        if (cell.porous2)
+          st.transversal_flux2 =
+              physics::transversalFlux(in.transmissivity2, st.interface_pressure, p2);
+      }
+      PetscCall(kernel(cell, q, phi, st, fp, T, (int)n));
     }
+    if (flow) PetscCall(DMPlexVecRestoreClosure(dm_, s, rates.rate, cell.cell, &nd, &udot));
     PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &u));
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceMechanics::residual(Vec local, Vec f) const
+PetscErrorCode InterfaceMechanics::residual(Vec local, const InterfaceRates &rates,
+                                            double mass_scale, Vec f) const
 {
   PetscSection s;
   std::vector<double> F;
@@ -289,31 +427,44 @@ PetscErrorCode InterfaceMechanics::residual(Vec local, Vec f) const
     if (current) PetscCall(DMPlexVecSetClosure(dm_, s, f, current->cell, F.data(), ADD_ALL_VALUES));
     PetscFunctionReturn(0);
   };
-  PetscCall(loop(local,
-                 [&](const Cell &cell, int q, const double *phi, const InterfacePointState &st,
-                     int n) -> PetscErrorCode {
+  PetscCall(loop(local, rates,
+                 [&](const Cell &cell, int, const double *phi, const InterfacePointState &st,
+                     const FlowPoint &fp, const double[3][3], int n) -> PetscErrorCode {
                    PetscFunctionBeginUser;
                    if (&cell != current) {
                      PetscCall(flush());
                      current = &cell;
                      F.assign(n, 0.0);
                    }
-                   double t[3], T[3][3];
-                   globalTraction(st.response, cell.frame, dim_, t, T);
-                   // The interface pushes side 1 with t and side 2 with -t; residual = -(force on
-                   // node).
-                   for (size_t a = 0; a < cell.side1_slot.size(); ++a)
+                   const int nf = (int)cell.u1.size();
+                   const double w = st.weight;
+                   // The interface pushes side 1 with t and side 2 with -t; residual = -force.
+                   for (int a = 0; a < nf; ++a)
                      for (int d = 0; d < dim_; ++d) {
-                       F[cell.side1_slot[a] * dim_ + d] -= st.weight * phi[a] * t[d];
-                       F[cell.side2_slot[a] * dim_ + d] += st.weight * phi[a] * t[d];
+                       F[cell.u1[a] + d] -= w * phi[a] * st.traction[d];
+                       F[cell.u2[a] + d] += w * phi[a] * st.traction[d];
                      }
+                   if (!st.flow) PetscFunctionReturn(0);
+                   // Interface balance dh/dt + div q_l = f1 - f2 (weak form, volumetric), and
+                   // f1 leaving side 1, f2 entering side 2.
+                   const double ws = mass_scale * w;
+                   const double net = st.transversal_flux1 - st.transversal_flux2;
+                   for (int a = 0; a < nf; ++a) {
+                     double div = 0.0;
+                     for (int d = 0; d < dim_; ++d)
+                       div += fp.grad_phi[a][d] * st.longitudinal_flux[d];
+                     F[cell.p3[a]] += ws * (phi[a] * (st.aperture_rate - net) - div);
+                     if (cell.porous1) F[cell.p1[a]] += ws * phi[a] * st.transversal_flux1;
+                     if (cell.porous2) F[cell.p2[a]] -= ws * phi[a] * st.transversal_flux2;
+                   }
                    PetscFunctionReturn(0);
                  }));
   PetscCall(flush());
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceMechanics::jacobian(Vec local, Mat J) const
+PetscErrorCode InterfaceMechanics::jacobian(Vec local, const InterfaceRates &rates, double shift,
+                                            double mass_scale, Mat J) const
 {
   PetscSection s, gs;
   std::vector<double> K;
@@ -327,9 +478,9 @@ PetscErrorCode InterfaceMechanics::jacobian(Vec local, Mat J) const
     if (current) PetscCall(DMPlexMatSetClosure(dm_, s, gs, J, current->cell, K.data(), ADD_VALUES));
     PetscFunctionReturn(0);
   };
-  PetscCall(loop(local,
-                 [&](const Cell &cell, int q, const double *phi, const InterfacePointState &st,
-                     int n) -> PetscErrorCode {
+  PetscCall(loop(local, rates,
+                 [&](const Cell &cell, int, const double *phi, const InterfacePointState &st,
+                     const FlowPoint &fp, const double T[3][3], int n) -> PetscErrorCode {
                    PetscFunctionBeginUser;
                    if (&cell != current) {
                      PetscCall(flush());
@@ -337,22 +488,68 @@ PetscErrorCode InterfaceMechanics::jacobian(Vec local, Mat J) const
                      size = n;
                      K.assign((size_t)n * n, 0.0);
                    }
-                   double t[3], T[3][3];
-                   globalTraction(st.response, cell.frame, dim_, t, T);
-                   // R_1a = -w phi_a t(g), R_2a = +w phi_a t(g), g = sum_b phi_b (u_2b - u_1b).
-                   const int nf = (int)cell.side1_slot.size();
+                   auto add = [&](int row, int col, double v) { K[(size_t)row * size + col] += v; };
+                   const Interface &in = scene_->interfaces[cell.iface];
+                   const int nf = (int)cell.u1.size();
+                   const double w = st.weight;
+                   const double *e1 = cell.frame[0];
+                   // Contact: R_1a = -w phi_a t(g), R_2a = +w phi_a t(g), g = sum phi_b (u_2b -
+                   // u_1b).
                    for (int a = 0; a < nf; ++a)
                      for (int b = 0; b < nf; ++b) {
-                       const double w = st.weight * phi[a] * phi[b];
-                       const int rows[2] = {cell.side1_slot[a], cell.side2_slot[a]};
-                       const int cols[2] = {cell.side1_slot[b], cell.side2_slot[b]};
-                       const double sr[2] = {-1.0, 1.0}, sc[2] = {-1.0, 1.0};
+                       const double wab = w * phi[a] * phi[b];
+                       const int rows[2] = {cell.u1[a], cell.u2[a]};
+                       const int cols[2] = {cell.u1[b], cell.u2[b]};
+                       const double sign[2] = {-1.0, 1.0};
                        for (int r = 0; r < 2; ++r)
                          for (int c = 0; c < 2; ++c)
                            for (int i = 0; i < dim_; ++i)
                              for (int j = 0; j < dim_; ++j)
-                               K[(size_t)(rows[r] * dim_ + i) * size + cols[c] * dim_ + j] +=
-                                   sr[r] * sc[c] * w * T[i][j];
+                               add(rows[r] + i, cols[c] + j, sign[r] * sign[c] * wab * T[i][j]);
+                     }
+                   if (!st.flow) PetscFunctionReturn(0);
+                   const double ws = mass_scale * w;
+                   // d q_l / d h (h depends on u through the opening).
+                   double dq_dh[3];
+                   for (int d = 0; d < 3; ++d)
+                     dq_dh[d] = -fp.d_conductivity *
+                                (fp.grad_p3[d] - scene_->fluid_density * fp.gravity_t[d]);
+                   const double active = fp.opening_active ? 1.0 : 0.0;
+                   for (int a = 0; a < nf; ++a)
+                     for (int b = 0; b < nf; ++b) {
+                       const double pp = phi[a] * phi[b];
+                       double gg = 0.0, gq = 0.0;
+                       for (int d = 0; d < dim_; ++d) {
+                         gg += fp.grad_phi[a][d] * fp.grad_phi[b][d];
+                         gq += fp.grad_phi[a][d] * dq_dh[d];
+                       }
+                       // p3 on both faces: R_u1 += w phi p3 e1, R_u2 -= w phi p3 e1.
+                       for (int i = 0; i < dim_; ++i) {
+                         add(cell.u1[a] + i, cell.p3[b], w * pp * e1[i]);
+                         add(cell.u2[a] + i, cell.p3[b], -w * pp * e1[i]);
+                       }
+                       // Interface balance row.
+                       add(cell.p3[a], cell.p3[b],
+                           ws * (fp.conductivity * gg + (in.transmissivity1 * cell.porous1 +
+                                                         in.transmissivity2 * cell.porous2) *
+                                                            pp));
+                       if (cell.porous1) {
+                         add(cell.p3[a], cell.p1[b], -ws * in.transmissivity1 * pp);
+                         add(cell.p1[a], cell.p1[b], ws * in.transmissivity1 * pp);
+                         add(cell.p1[a], cell.p3[b], -ws * in.transmissivity1 * pp);
+                       }
+                       if (cell.porous2) {
+                         add(cell.p3[a], cell.p2[b], -ws * in.transmissivity2 * pp);
+                         add(cell.p2[a], cell.p2[b], ws * in.transmissivity2 * pp);
+                         add(cell.p2[a], cell.p3[b], -ws * in.transmissivity2 * pp);
+                       }
+                       // Storage dh/dt and conductivity through the opening: d/du_2 = +, d/du_1 =
+                       // -.
+                       const double du = ws * active * (shift * pp - gq * phi[b]);
+                       for (int j = 0; j < dim_; ++j) {
+                         add(cell.p3[a], cell.u2[b] + j, du * e1[j]);
+                         add(cell.p3[a], cell.u1[b] + j, -du * e1[j]);
+                       }
                      }
                    PetscFunctionReturn(0);
                  }));
@@ -364,9 +561,9 @@ PetscErrorCode InterfaceMechanics::commit(Vec local)
 {
   std::vector<physics::ContactHistory> updated = committed_;
   PetscFunctionBeginUser;
-  PetscCall(loop(local,
+  PetscCall(loop(local, InterfaceRates{},
                  [&](const Cell &cell, int q, const double *, const InterfacePointState &st,
-                     int) -> PetscErrorCode {
+                     const FlowPoint &, const double[3][3], int) -> PetscErrorCode {
                    updated[cell.history + q] = st.response.updated;
                    return 0;
                  }));
@@ -375,12 +572,13 @@ PetscErrorCode InterfaceMechanics::commit(Vec local)
 }
 
 PetscErrorCode InterfaceMechanics::visit(
-    Vec local, const std::function<void(int, int, PetscInt, const InterfacePointState &)> &f) const
+    Vec local, const InterfaceRates &rates,
+    const std::function<void(int, int, PetscInt, const InterfacePointState &)> &f) const
 {
   PetscFunctionBeginUser;
-  PetscCall(loop(local,
+  PetscCall(loop(local, rates,
                  [&](const Cell &cell, int, const double *, const InterfacePointState &st,
-                     int) -> PetscErrorCode {
+                     const FlowPoint &, const double[3][3], int) -> PetscErrorCode {
                    f(cell.iface, cell.surface, cell.cell, st);
                    return 0;
                  }));

@@ -132,9 +132,11 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   PetscCall(checkOnAllRanks(comm, error));
   {
     double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
+    // Porous regions set the scale; with none (interface flow between solid bodies), all do.
+    const bool any_porous = scene.hasPressure();
     for (const auto &cell : cells_) {
       const Region &r = scene.regions[cell.region];
-      if (!r.porous()) continue;
+      if (any_porous && !r.porous()) continue;
       local[0] += cell.size;
       local[1] += 1.0;
       local[2] = std::max(local[2], physics::lameFromYoung(r.young, r.poisson).constrained());
@@ -192,6 +194,32 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     if (!bc.dirichlet()) continue;
     DMLabel label;
     PetscCall(DMGetLabel(dm, boundaryLabelName(bc.boundary).c_str(), &label));
+    if (bc.kind == BcKind::interface_pressure) {
+      // Lateral edges (p3) whose vertices lie on the boundary, as in createSolutionSection.
+      DMLabel lateral;
+      PetscCall(DMGetLabel(dm, kInterfacePressureLabel, &lateral));
+      IS edges = nullptr;
+      if (lateral) PetscCall(DMLabelGetStratumIS(lateral, 1, &edges));
+      if (!edges) continue;
+      const PetscInt *idx;
+      PetscInt n;
+      PetscCall(ISGetLocalSize(edges, &n));
+      PetscCall(ISGetIndices(edges, &idx));
+      for (PetscInt k = 0; k < n; ++k) {
+        const PetscInt *cone;
+        PetscInt on = -1, dof = 0, off = 0;
+        PetscCall(DMPlexGetCone(dm, idx[k], &cone));
+        PetscCall(DMLabelGetValue(label, cone[0], &on));
+        if (on != 1) continue;
+        PetscCall(PetscSectionGetFieldDof(s, idx[k], kInterfacePressureField, &dof));
+        if (!dof) continue;
+        PetscCall(PetscSectionGetFieldOffset(s, idx[k], kInterfacePressureField, &off));
+        constrained_.push_back({off, (int)i});
+      }
+      PetscCall(ISRestoreIndices(edges, &idx));
+      PetscCall(ISDestroy(&edges));
+      continue;
+    }
     IS points = nullptr;
     PetscCall(DMLabelGetStratumIS(label, 1, &points));
     if (!points) continue;
@@ -238,6 +266,21 @@ PetscErrorCode Problem::initialState(Vec local) const
     PetscCall(PetscSectionGetFieldOffset(s, v, kPressureField, &off));
     PetscCall(PetscSectionGetOffset(csec, v, &coff));
     u[off] = initialPressure(&x[coff]);
+  }
+  if (numFields > kInterfacePressureField) {
+    // p3 starts hydrostatic too, at the position of its lateral edge's vertices.
+    PetscInt eStart, eEnd;
+    PetscCall(DMPlexGetDepthStratum(dm_, 1, &eStart, &eEnd));
+    for (PetscInt e = eStart; e < eEnd; ++e) {
+      PetscInt dof, off, coff;
+      PetscCall(PetscSectionGetFieldDof(s, e, kInterfacePressureField, &dof));
+      if (!dof) continue;
+      const PetscInt *cone;
+      PetscCall(DMPlexGetCone(dm_, e, &cone));
+      PetscCall(PetscSectionGetFieldOffset(s, e, kInterfacePressureField, &off));
+      PetscCall(PetscSectionGetOffset(csec, cone[0], &coff));
+      u[off] = initialPressure(&x[coff]);
+    }
   }
   PetscCall(VecRestoreArray(local, &u));
   PetscCall(VecRestoreArrayRead(coords, &x));
@@ -429,7 +472,7 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
     // ADD_ALL_VALUES keeps the entries of constrained dofs: they are the reactions.
     PetscCall(DMPlexVecSetClosure(dm_, s, f, cell.cell, F.data(), ADD_ALL_VALUES));
   }
-  PetscCall(interfaces_.residual(local, f));
+  PetscCall(interfaces_.residual(local, InterfaceRates{local_rate, mode.dt}, mode.mass_scale, f));
   if (!mode.include_loads) PetscFunctionReturn(0);
   // Natural conditions: R_u -= int t . v, R_p += s int psi q_n.
   for (const auto &face : faces_) {
@@ -497,7 +540,8 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
     PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &x));
     PetscCall(DMPlexMatSetClosure(dm_, s, gs, J, cell.cell, K.data(), ADD_VALUES));
   }
-  PetscCall(interfaces_.jacobian(local, J));
+  PetscCall(interfaces_.jacobian(local, InterfaceRates{local_rate, shift > 0.0 ? 1.0 / shift : 0.0},
+                                 shift, mass_scale, J));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);

@@ -1,5 +1,7 @@
 #include "poroseam/layout.hpp"
 
+#include "poroseam/interfaces.hpp"
+
 #include <vector>
 
 namespace poroseam {
@@ -34,6 +36,28 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
     }
   }
   PetscCall(DMPlexLabelComplete(dm, porous));
+  // Lateral edges of cohesive cells of interfaces with flow.
+  PetscCall(DMCreateLabel(dm, kInterfacePressureLabel));
+  if (scene.hasInterfacePressure()) {
+    DMLabel lateral, iface;
+    PetscCall(DMGetLabel(dm, kInterfacePressureLabel, &lateral));
+    PetscCall(DMGetLabel(dm, kInterfaceLabel, &iface));
+    PetscInt cStart, cEnd;
+    PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+    for (PetscInt c = cStart; c < cEnd; ++c) {
+      PetscInt which = -1;
+      PetscCall(DMLabelGetValue(iface, c, &which));
+      if (which < 1 || !scene.interfaces[which - 1].flow) continue;
+      PetscInt n, *pts = nullptr;
+      PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
+      for (PetscInt k = 0; k < n; ++k) {
+        DMPolytopeType t;
+        PetscCall(DMPlexGetCellType(dm, pts[2 * k], &t));
+        if (t == DM_POLYTOPE_POINT_PRISM_TENSOR) PetscCall(DMLabelSetValue(lateral, pts[2 * k], 1));
+      }
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
+    }
+  }
   for (const auto &b : scene.boundaries) {
     DMLabel label;
     const std::string name = boundaryLabelName(b.name);
@@ -56,24 +80,61 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
   PetscFunctionReturn(0);
 }
 
+namespace {
+
+/// Whether a point is in stratum 1 of a label.
+PetscErrorCode inLabel(DMLabel label, PetscInt point, bool *in)
+{
+  PetscInt value = -1;
+  PetscFunctionBeginUser;
+  if (label) PetscCall(DMLabelGetValue(label, point, &value));
+  *in = value == 1;
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
 PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
 {
   const int dim = scene.dim;
-  const bool pressure = scene.hasPressure();
-  PetscInt pStart, pEnd, vStart, vEnd;
-  DMLabel porous;
+  const bool interface_pressure = scene.hasInterfacePressure();
+  const bool pressure = scene.hasPressure() || interface_pressure; // fields keep their numbers
+  const int numFields = interface_pressure ? 3 : pressure ? 2 : 1;
+  PetscInt pStart, pEnd;
+  DMLabel porous, lateral;
   PetscSection s;
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   PetscCall(DMGetLabel(dm, kPorousLabel, &porous));
+  PetscCall(DMGetLabel(dm, kInterfacePressureLabel, &lateral));
 
-  // Constrained components per vertex: bits 0..dim-1 displacement, bit dim pressure.
-  std::vector<unsigned> constrained(vEnd - vStart, 0u);
+  // Constrained components per point: bits 0..dim-1 displacement, bit dim pressure,
+  // bit dim + 1 interface pressure.
+  std::vector<unsigned> constrained(pEnd - pStart, 0u);
   for (const auto &bc : scene.conditions) {
     if (!bc.dirichlet()) continue;
     DMLabel label;
     PetscCall(DMGetLabel(dm, boundaryLabelName(bc.boundary).c_str(), &label));
+    if (bc.kind == BcKind::interface_pressure) {
+      // A lateral edge whose vertices lie on the boundary.
+      IS edges = nullptr;
+      if (lateral) PetscCall(DMLabelGetStratumIS(lateral, 1, &edges));
+      if (!edges) continue;
+      const PetscInt *idx;
+      PetscInt n;
+      PetscCall(ISGetLocalSize(edges, &n));
+      PetscCall(ISGetIndices(edges, &idx));
+      for (PetscInt i = 0; i < n; ++i) {
+        const PetscInt *cone;
+        PetscCall(DMPlexGetCone(dm, idx[i], &cone));
+        bool on;
+        PetscCall(inLabel(label, cone[0], &on));
+        if (on) constrained[idx[i] - pStart] |= 1u << (dim + 1);
+      }
+      PetscCall(ISRestoreIndices(edges, &idx));
+      PetscCall(ISDestroy(&edges));
+      continue;
+    }
     IS points = nullptr;
     PetscCall(DMLabelGetStratumIS(label, 1, &points));
     if (!points) continue;
@@ -83,59 +144,75 @@ PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
     PetscCall(ISGetIndices(points, &idx));
     const unsigned bit = bc.kind == BcKind::pressure ? 1u << dim : 1u << bc.component;
     for (PetscInt i = 0; i < n; ++i)
-      if (idx[i] >= vStart && idx[i] < vEnd) constrained[idx[i] - vStart] |= bit;
+      constrained[idx[i] - pStart] |= bit;
     PetscCall(ISRestoreIndices(points, &idx));
     PetscCall(ISDestroy(&points));
   }
 
   PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));
-  PetscCall(PetscSectionSetNumFields(s, pressure ? 2 : 1));
+  PetscCall(PetscSectionSetNumFields(s, numFields));
   PetscCall(PetscSectionSetFieldName(s, kDisplacementField, "displacement"));
   PetscCall(PetscSectionSetFieldComponents(s, kDisplacementField, dim));
   if (pressure) {
     PetscCall(PetscSectionSetFieldName(s, kPressureField, "pressure"));
     PetscCall(PetscSectionSetFieldComponents(s, kPressureField, 1));
   }
+  if (interface_pressure) {
+    PetscCall(PetscSectionSetFieldName(s, kInterfacePressureField, "interface_pressure"));
+    PetscCall(PetscSectionSetFieldComponents(s, kInterfacePressureField, 1));
+  }
   PetscCall(PetscSectionSetChart(s, pStart, pEnd));
-  auto hasPressure = [&](PetscInt v, bool *has) -> PetscErrorCode {
-    PetscInt value = -1;
+
+  // Dofs per point and field: u on vertices, p on porous vertices, p3 on flow lateral edges.
+  PetscInt vStart, vEnd;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  auto dofs = [&](PetscInt pt, int field_dofs[3], int field_constraints[3]) -> PetscErrorCode {
     PetscFunctionBeginUser;
-    if (pressure) PetscCall(DMLabelGetValue(porous, v, &value));
-    *has = value == 1;
+    const unsigned bits = constrained[pt - pStart];
+    for (int f = 0; f < 3; ++f)
+      field_dofs[f] = field_constraints[f] = 0;
+    if (pt >= vStart && pt < vEnd) {
+      field_dofs[0] = dim;
+      for (int d = 0; d < dim; ++d)
+        field_constraints[0] += (bits >> d) & 1u;
+      bool hasP = false;
+      if (scene.hasPressure()) PetscCall(inLabel(porous, pt, &hasP));
+      field_dofs[1] = hasP ? 1 : 0;
+      field_constraints[1] = hasP ? (int)((bits >> dim) & 1u) : 0;
+    } else if (interface_pressure) {
+      bool hasP3 = false;
+      PetscCall(inLabel(lateral, pt, &hasP3));
+      field_dofs[2] = hasP3 ? 1 : 0;
+      field_constraints[2] = hasP3 ? (int)((bits >> (dim + 1)) & 1u) : 0;
+    }
     PetscFunctionReturn(0);
   };
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    bool hasP = false;
-    PetscCall(hasPressure(v, &hasP));
-    const unsigned bits = constrained[v - vStart];
-    int cu = 0;
-    for (int d = 0; d < dim; ++d)
-      cu += (bits >> d) & 1u;
-    const int cp = hasP && ((bits >> dim) & 1u);
-    PetscCall(PetscSectionSetDof(s, v, dim + (hasP ? 1 : 0)));
-    PetscCall(PetscSectionSetFieldDof(s, v, kDisplacementField, dim));
-    if (pressure) PetscCall(PetscSectionSetFieldDof(s, v, kPressureField, hasP ? 1 : 0));
-    if (cu + cp) {
-      PetscCall(PetscSectionSetConstraintDof(s, v, cu + cp));
-      PetscCall(PetscSectionSetFieldConstraintDof(s, v, kDisplacementField, cu));
-      if (pressure) PetscCall(PetscSectionSetFieldConstraintDof(s, v, kPressureField, cp));
+  for (PetscInt pt = pStart; pt < pEnd; ++pt) {
+    int nd[3], nc[3];
+    PetscCall(dofs(pt, nd, nc));
+    PetscCall(PetscSectionSetDof(s, pt, nd[0] + nd[1] + nd[2]));
+    for (int f = 0; f < numFields; ++f)
+      PetscCall(PetscSectionSetFieldDof(s, pt, f, nd[f]));
+    if (nc[0] + nc[1] + nc[2]) {
+      PetscCall(PetscSectionSetConstraintDof(s, pt, nc[0] + nc[1] + nc[2]));
+      for (int f = 0; f < numFields; ++f)
+        PetscCall(PetscSectionSetFieldConstraintDof(s, pt, f, nc[f]));
     }
   }
   PetscCall(PetscSectionSetUp(s));
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    const unsigned bits = constrained[v - vStart];
-    PetscInt cdof;
-    PetscCall(PetscSectionGetConstraintDof(s, v, &cdof));
-    if (!cdof) continue;
-    PetscInt all[4], fieldU[3], fieldP[1], nu = 0, np = 0, na = 0;
-    for (int d = 0; d < dim; ++d)
-      if ((bits >> d) & 1u) fieldU[nu++] = d, all[na++] = d;
-    bool hasP = false;
-    PetscCall(hasPressure(v, &hasP));
-    if (hasP && ((bits >> dim) & 1u)) fieldP[np++] = 0, all[na++] = dim;
-    PetscCall(PetscSectionSetFieldConstraintIndices(s, v, kDisplacementField, fieldU));
-    if (pressure) PetscCall(PetscSectionSetFieldConstraintIndices(s, v, kPressureField, fieldP));
-    PetscCall(PetscSectionSetConstraintIndices(s, v, all));
+  for (PetscInt pt = pStart; pt < pEnd; ++pt) {
+    int nd[3], nc[3];
+    PetscCall(dofs(pt, nd, nc));
+    if (!(nc[0] + nc[1] + nc[2])) continue;
+    const unsigned bits = constrained[pt - pStart];
+    PetscInt all[5], field[3][3], count[3] = {0, 0, 0}, na = 0;
+    for (int d = 0; d < dim && nd[0]; ++d)
+      if ((bits >> d) & 1u) field[0][count[0]++] = d, all[na++] = d;
+    if (nc[1]) field[1][count[1]++] = 0, all[na++] = nd[0];
+    if (nc[2]) field[2][count[2]++] = 0, all[na++] = nd[0] + nd[1];
+    for (int f = 0; f < numFields; ++f)
+      PetscCall(PetscSectionSetFieldConstraintIndices(s, pt, f, field[f]));
+    PetscCall(PetscSectionSetConstraintIndices(s, pt, all));
   }
   PetscCall(DMSetLocalSection(dm, s));
   PetscCall(PetscSectionDestroy(&s));

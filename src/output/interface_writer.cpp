@@ -143,8 +143,8 @@ struct InterfaceWriter::Impl {
   std::vector<PetscInt> local_cells;  // cohesive cell of each local output cell (for checks)
   std::vector<int> local_point_count; // integration points of each local output cell
 
-  PetscErrorCode collect(const InterfaceMechanics &mech, Vec local, std::vector<CellRecord> &cells,
-                         std::vector<PointRecord> &points) const;
+  PetscErrorCode collect(const InterfaceMechanics &mech, Vec local, const InterfaceRates &rates,
+                         std::vector<CellRecord> &cells, std::vector<PointRecord> &points) const;
   PetscErrorCode writeMesh(const std::vector<CellRecord> &cells,
                            const std::vector<PointRecord> &points);
   PetscErrorCode writeValues(const std::string &grid, const std::vector<Values> &values,
@@ -154,6 +154,7 @@ struct InterfaceWriter::Impl {
 };
 
 PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceMechanics &mech, Vec local,
+                                              const InterfaceRates &rates,
                                               std::vector<CellRecord> &cells,
                                               std::vector<PointRecord> &points) const
 {
@@ -163,52 +164,52 @@ PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceMechanics &mech, Ve
   PetscFunctionBeginUser;
   cells.clear();
   points.clear();
-  PetscCall(
-      mech.visit(local, [&](int iface, int surface, PetscInt cell, const InterfacePointState &st) {
-        if (cells.empty() || cells.back().cell != cell || st.point == 0) {
-          CellRecord c;
-          c.cell = cell;
-          c.iface = iface;
-          c.surface = surface;
-          c.nodes = st.face_vertices;
-          if (st.face_coords)
-            c.coords.assign(st.face_coords, st.face_coords + st.face_vertices * d);
-          c.first = points.size();
-          c.count = 0;
-          if (st.point != 0 || !st.face_coords) bad = true;
-          cells.push_back(std::move(c));
-        }
-        CellRecord &c = cells.back();
-        ++c.count;
-        PointRecord p;
-        p.cell = cell;
-        p.iface = iface;
-        p.surface = surface;
-        p.point = st.point;
-        p.num_points = st.num_points;
-        for (int i = 0; i < 3; ++i) {
-          p.x[i] = i < d ? st.x[i] : 0.0;
-          p.normal[i] = st.frame[0][i];
-          p.traction[i] = st.traction[i];
-          p.slip_vector[i] = 0.0;
-          p.shear_traction[i] = 0.0;
-        }
-        p.weight = st.weight;
-        p.gap_normal = st.gap_normal;
-        p.opening = st.opening;
-        p.pressure = st.response.contact_pressure_effective;
-        for (int k = 0; k < 2; ++k) {
-          p.slip[k] = k < t ? st.gap_tangential[k] : 0.0;
-          p.shear[k] = k < t ? st.response.shear[k] : 0.0;
-        }
-        for (int k = 0; k < t; ++k)
-          for (int i = 0; i < 3; ++i) {
-            p.slip_vector[i] += p.slip[k] * st.frame[k + 1][i];
-            p.shear_traction[i] += p.shear[k] * st.frame[k + 1][i];
-          }
-        p.state = static_cast<int>(st.response.state);
-        points.push_back(p);
-      }));
+  PetscCall(mech.visit(local, rates,
+                       [&](int iface, int surface, PetscInt cell, const InterfacePointState &st) {
+                         if (cells.empty() || cells.back().cell != cell || st.point == 0) {
+                           CellRecord c;
+                           c.cell = cell;
+                           c.iface = iface;
+                           c.surface = surface;
+                           c.nodes = st.face_vertices;
+                           if (st.face_coords)
+                             c.coords.assign(st.face_coords, st.face_coords + st.face_vertices * d);
+                           c.first = points.size();
+                           c.count = 0;
+                           if (st.point != 0 || !st.face_coords) bad = true;
+                           cells.push_back(std::move(c));
+                         }
+                         CellRecord &c = cells.back();
+                         ++c.count;
+                         PointRecord p;
+                         p.cell = cell;
+                         p.iface = iface;
+                         p.surface = surface;
+                         p.point = st.point;
+                         p.num_points = st.num_points;
+                         for (int i = 0; i < 3; ++i) {
+                           p.x[i] = i < d ? st.x[i] : 0.0;
+                           p.normal[i] = st.frame[0][i];
+                           p.traction[i] = st.traction[i];
+                           p.slip_vector[i] = 0.0;
+                           p.shear_traction[i] = 0.0;
+                         }
+                         p.weight = st.weight;
+                         p.gap_normal = st.gap_normal;
+                         p.opening = st.opening;
+                         p.pressure = st.response.contact_pressure_effective;
+                         for (int k = 0; k < 2; ++k) {
+                           p.slip[k] = k < t ? st.gap_tangential[k] : 0.0;
+                           p.shear[k] = k < t ? st.response.shear[k] : 0.0;
+                         }
+                         for (int k = 0; k < t; ++k)
+                           for (int i = 0; i < 3; ++i) {
+                             p.slip_vector[i] += p.slip[k] * st.frame[k + 1][i];
+                             p.shear_traction[i] += p.shear[k] * st.frame[k + 1][i];
+                           }
+                         p.state = static_cast<int>(st.response.state);
+                         points.push_back(p);
+                       }));
   for (const CellRecord &c : cells)
     if (c.count != static_cast<size_t>(points[c.first].num_points) || c.nodes < 2 || c.nodes > 4)
       bad = true;
@@ -511,7 +512,7 @@ PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const st
 }
 
 PetscErrorCode InterfaceWriter::write(double time, const InterfaceMechanics &mech,
-                                      Vec local_solution)
+                                      Vec local_solution, const InterfaceRates &rates)
 {
   PetscFunctionBeginUser;
   PetscCheck(impl_, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE,
@@ -522,7 +523,7 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceMechanics &mec
 
   std::vector<CellRecord> cells;
   std::vector<PointRecord> points;
-  PetscCall(im.collect(mech, local_solution, cells, points));
+  PetscCall(im.collect(mech, local_solution, rates, cells, points));
   if (!im.mesh_written) {
     PetscCall(im.writeMesh(cells, points));
   } else {

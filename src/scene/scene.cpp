@@ -250,6 +250,20 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
     }
   }
   {
+    double v = 0.0;
+    bool set = false;
+    PetscCall(getReal(p + "p3", &v, &set));
+    if (set) {
+      PetscCheck(scene.hasInterfacePressure(), comm, PETSC_ERR_USER_INPUT,
+                 "%sp3: no interface of the scene has flow (-interface_<i>_flow)", p.c_str());
+      BoundaryCondition bc;
+      bc.kind = BcKind::interface_pressure;
+      bc.value = {v};
+      bc.option = p + "p3";
+      PetscCall(add(bc));
+    }
+  }
+  {
     std::vector<double> v;
     bool set = false;
     PetscCall(getRealList(p + "traction", v, &set));
@@ -324,6 +338,26 @@ PetscErrorCode readInterface(MPI_Comm comm, const std::vector<PhysicalName> &nam
   PetscCheck(rule == "gauss" || rule == "nodal", comm, PETSC_ERR_USER_INPUT,
              "%sintegration %s: expected 'gauss' or 'nodal'", p.c_str(), rule.c_str());
   i.nodal_integration = rule == "nodal";
+  PetscBool flow = PETSC_FALSE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, (p + "flow").c_str(), &flow, nullptr));
+  i.flow = flow;
+  if (i.flow) {
+    PetscCheck(!scene.drained, comm, PETSC_ERR_USER_INPUT,
+               "%sflow: a drained scene has no pressure, so no interface flow", p.c_str());
+    PetscCall(getRequiredReal(comm, p + "D0", "hydraulic aperture D0 [m] of interface " + i.name,
+                              &i.aperture0));
+    PetscCheck(i.aperture0 > 0.0, comm, PETSC_ERR_USER_INPUT, "%sD0 = %g: must be > 0", p.c_str(),
+               i.aperture0);
+    PetscCall(getRequiredReal(comm, p + "T1",
+                              "transmissivity T1 [m/(Pa s)] between side 1 and interface " + i.name,
+                              &i.transmissivity1));
+    PetscCall(getRequiredReal(
+        comm, p + "T2", "transmissivity T2 [m/(Pa s)] between interface " + i.name + " and side 2",
+        &i.transmissivity2));
+    PetscCheck(i.transmissivity1 >= 0.0 && i.transmissivity2 >= 0.0, comm, PETSC_ERR_USER_INPUT,
+               "%sT1 = %g, %sT2 = %g: transmissivities must be >= 0 (0: impervious side)",
+               p.c_str(), i.transmissivity1, p.c_str(), i.transmissivity2);
+  }
   PetscFunctionReturn(0);
 }
 
@@ -393,6 +427,12 @@ PetscErrorCode readProbes(MPI_Comm comm, Scene &scene)
 }
 
 } // namespace
+
+bool Scene::hasInterfacePressure() const
+{
+  return std::any_of(interfaces.begin(), interfaces.end(),
+                     [](const Interface &i) { return i.flow; });
+}
 
 bool Scene::hasPressure() const
 {
@@ -471,6 +511,14 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   for (auto &r : scene.regions)
     PetscCall(readRegion(comm, r, scene.gravity > 0.0, scene.drained));
 
+  PetscCall(getStringList("-interfaces", list, &set));
+  scene.interfaces.clear();
+  for (const auto &name : list) {
+    Interface i;
+    i.name = name;
+    PetscCall(readInterface(comm, names, dim, scene, i));
+    scene.interfaces.push_back(i);
+  }
   PetscCall(getStringList("-boundaries", list, &set));
   scene.boundaries.clear();
   for (const auto &name : list) {
@@ -482,14 +530,6 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   scene.conditions.clear();
   for (const auto &b : scene.boundaries)
     PetscCall(readBoundary(comm, scene, b, scene.conditions));
-  PetscCall(getStringList("-interfaces", list, &set));
-  scene.interfaces.clear();
-  for (const auto &name : list) {
-    Interface i;
-    i.name = name;
-    PetscCall(readInterface(comm, names, dim, scene, i));
-    scene.interfaces.push_back(i);
-  }
   PetscCall(checkOptionNames(comm, scene));
 
   double every = scene.output_every;

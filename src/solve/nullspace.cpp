@@ -100,7 +100,9 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
                                (PetscObject)modes));
   PetscCall(MatNullSpaceDestroy(&modes));
   for (PetscInt f = 0; f < numFields; ++f) {
-    PetscCall(PCFieldSplitSetIS(pc, names[f], fields[f]));
+    PetscInt size;
+    PetscCall(ISGetSize(fields[f], &size));
+    if (size > 0) PetscCall(PCFieldSplitSetIS(pc, names[f], fields[f])); // skip empty fields
     PetscCall(PetscFree(names[f]));
     PetscCall(ISDestroy(&fields[f]));
   }

@@ -21,8 +21,9 @@ namespace {
 
 /// Per-boundary offsets of the local vector entries summed into force and flux resultants.
 struct BoundaryDofs {
-  std::vector<PetscInt> displacement; ///< first displacement dof of each vertex
-  std::vector<PetscInt> pressure;     ///< pressure dof of each vertex that has one
+  std::vector<PetscInt> displacement;       ///< first displacement dof of each vertex
+  std::vector<PetscInt> pressure;           ///< pressure dof of each vertex that has one
+  std::vector<PetscInt> interface_pressure; ///< prescribed p3 dofs of interfaces ending here
 };
 
 struct Run {
@@ -36,6 +37,8 @@ struct Run {
   Vec previous = nullptr; ///< local state of the last accepted step (boundary values included)
   Vec initial = nullptr;  ///< local initial state
   std::vector<BoundaryDofs> boundary_dofs;
+  /// Per interface: its prescribed interface-pressure dofs, where water leaves along it.
+  std::vector<std::vector<PetscInt>> interface_end_dofs;
   FILE *csv = nullptr;
   double nominal_dt = 0.0;
   double fail_dt_above = 0.0; ///< test hook: step attempts with a larger dt fail
@@ -80,7 +83,7 @@ PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f,
     PetscCall(SNESSetFunctionDomainError(snes));
   }
   const double mass_scale = -dt * run.problem.massBalanceScale();
-  PetscCall(run.problem.residual(t, local, local_rate, ResidualMode{mass_scale, true}, f));
+  PetscCall(run.problem.residual(t, local, local_rate, ResidualMode{mass_scale, true, dt}, f));
   PetscFunctionReturn(0);
 }
 
@@ -135,19 +138,60 @@ PetscErrorCode collectBoundaryDofs(Run &run)
     PetscCall(ISRestoreIndices(points, &idx));
     PetscCall(ISDestroy(&points));
   }
+  // Prescribed interface pressures, per interface (lateral edges, found from their star).
+  run.interface_end_dofs.assign(run.scene.interfaces.size(), {});
+  DMLabel lateral, iface;
+  PetscCall(DMGetLabel(run.dm, kInterfacePressureLabel, &lateral));
+  PetscCall(DMGetLabel(run.dm, kInterfaceLabel, &iface));
+  IS edges = nullptr;
+  if (lateral && iface) PetscCall(DMLabelGetStratumIS(lateral, 1, &edges));
+  if (edges) {
+    const PetscInt *idx;
+    PetscInt n;
+    PetscCall(ISGetLocalSize(edges, &n));
+    PetscCall(ISGetIndices(edges, &idx));
+    for (PetscInt k = 0; k < n; ++k) {
+      PetscInt cdof = 0, off;
+      PetscCall(PetscSectionGetFieldConstraintDof(s, idx[k], kInterfacePressureField, &cdof));
+      if (!cdof) continue;
+      PetscCall(PetscSectionGetFieldOffset(s, idx[k], kInterfacePressureField, &off));
+      PetscInt nstar, *star = nullptr, which = -1;
+      PetscCall(DMPlexGetTransitiveClosure(run.dm, idx[k], PETSC_FALSE, &nstar, &star));
+      for (PetscInt m = 0; m < nstar && which < 1; ++m)
+        PetscCall(DMLabelGetValue(iface, star[2 * m], &which));
+      PetscCall(DMPlexRestoreTransitiveClosure(run.dm, idx[k], PETSC_FALSE, &nstar, &star));
+      if (which >= 1) run.interface_end_dofs[which - 1].push_back(off);
+      const PetscInt *cone;
+      PetscCall(DMPlexGetCone(run.dm, idx[k], &cone));
+      for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
+        DMLabel label;
+        PetscInt on = -1;
+        PetscCall(
+            DMGetLabel(run.dm, boundaryLabelName(run.scene.boundaries[b].name).c_str(), &label));
+        PetscCall(DMLabelGetValue(label, cone[0], &on));
+        if (on == 1) run.boundary_dofs[b].interface_pressure.push_back(off);
+      }
+    }
+    PetscCall(ISRestoreIndices(edges, &idx));
+    PetscCall(ISDestroy(&edges));
+  }
   PetscFunctionReturn(0);
 }
 
-/// Forces [N] and outflows [m3/s] through every boundary, from the residual without loads.
-PetscErrorCode boundaryResultants(Run &run, double t, Vec local, Vec rate, std::vector<double> &out)
+/// Per boundary: force [N], water outflow from the bulk [m3/s] and, with interface flow,
+/// water leaving along interfaces that end there [m3/s]; then the longitudinal outflow
+/// [m3/s] of every interface (0 without flow or prescribed ends). From the residual without
+/// loads.
+PetscErrorCode boundaryResultants(Run &run, double t, double dt, Vec local, Vec rate,
+                                  std::vector<double> &out)
 {
-  const int dim = run.scene.dim, per = dim + 1;
+  const int dim = run.scene.dim, per = dim + 1 + (run.scene.hasInterfacePressure() ? 1 : 0);
   Vec f;
   const PetscScalar *r;
   MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalVector(run.dm, &f));
-  PetscCall(run.problem.residual(t, local, rate, ResidualMode{1.0, false}, f));
+  PetscCall(run.problem.residual(t, local, rate, ResidualMode{1.0, false, dt}, f));
   PetscCall(VecGetArrayRead(f, &r));
   std::vector<double> mine(run.boundary_dofs.size() * per, 0.0);
   for (size_t b = 0; b < run.boundary_dofs.size(); ++b) {
@@ -157,6 +201,15 @@ PetscErrorCode boundaryResultants(Run &run, double t, Vec local, Vec rate, std::
         mine[b * per + d] += r[off + d];
     for (PetscInt off : run.boundary_dofs[b].pressure)
       mine[b * per + dim] -= r[off];
+    for (PetscInt off : run.boundary_dofs[b].interface_pressure)
+      mine[b * per + dim + 1] -= r[off];
+  }
+  // Longitudinal outflow of each interface through its ends with prescribed p3.
+  for (const auto &dofs : run.interface_end_dofs) {
+    double outflow = 0.0;
+    for (PetscInt off : dofs)
+      outflow -= r[off];
+    mine.push_back(outflow);
   }
   PetscCall(VecRestoreArrayRead(f, &r));
   PetscCall(DMRestoreLocalVector(run.dm, &f));
@@ -165,27 +218,41 @@ PetscErrorCode boundaryResultants(Run &run, double t, Vec local, Vec rate, std::
   PetscFunctionReturn(0);
 }
 
-/// Force on side 1 from side 2 of every interface [N, per m in 2D], then of each of its
-/// surfaces when it has several.
-PetscErrorCode interfaceForces(Run &run, Vec local, std::vector<double> &out)
+/// Per interface, then per part when it has several: the force on side 1 from side 2
+/// [N, per m in 2D] and, with flow, the water from side 1 into the gap, from the gap into
+/// side 2 [m3/s], the water stored in the gap [m3] and its rate [m3/s].
+int interfaceBlock(const Scene &scene, const Interface &i)
 {
-  const int dim = run.scene.dim;
+  return scene.dim + (i.flow ? 4 : 0);
+}
+
+PetscErrorCode interfaceResultants(Run &run, Vec local, const InterfaceRates &rates,
+                                   std::vector<double> &out)
+{
+  const Scene &scene = run.scene;
   std::vector<size_t> first;
   size_t count = 0;
-  for (const auto &i : run.scene.interfaces) {
+  for (const auto &i : scene.interfaces) {
     first.push_back(count);
-    count += dim * (1 + (i.surfaces.size() > 1 ? i.surfaces.size() : 0));
+    count += interfaceBlock(scene, i) * (1 + (i.surfaces.size() > 1 ? i.surfaces.size() : 0));
   }
   std::vector<double> mine(count, 0.0);
   PetscFunctionBeginUser;
   PetscCall(run.problem.interfaces().visit(
-      local, [&](int iface, int surface, PetscInt, const InterfacePointState &st) {
-        const size_t base = first[iface];
-        for (int d = 0; d < dim; ++d) {
-          mine[base + d] += st.weight * st.traction[d];
-          if (run.scene.interfaces[iface].surfaces.size() > 1)
-            mine[base + dim * (1 + surface) + d] += st.weight * st.traction[d];
-        }
+      local, rates, [&](int iface, int surface, PetscInt, const InterfacePointState &st) {
+        const Interface &in = scene.interfaces[iface];
+        const int block = interfaceBlock(scene, in);
+        auto add = [&](size_t base) {
+          for (int d = 0; d < scene.dim; ++d)
+            mine[base + d] += st.weight * st.traction[d];
+          if (!in.flow) return;
+          mine[base + scene.dim + 0] += st.weight * st.transversal_flux1;
+          mine[base + scene.dim + 1] += st.weight * st.transversal_flux2;
+          mine[base + scene.dim + 2] += st.weight * st.aperture;
+          mine[base + scene.dim + 3] += st.weight * st.aperture_rate;
+        };
+        add(first[iface]);
+        if (in.surfaces.size() > 1) add(first[iface] + block * (1 + surface));
       }));
   out.assign(count, 0.0);
   PetscCallMPI(MPI_Allreduce(mine.data(), out.data(), (int)count, MPI_DOUBLE, MPI_SUM,
@@ -206,16 +273,22 @@ PetscErrorCode forceLevel(Run &run, Vec X, double *level)
   PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, local));
   PetscCall(run.problem.insertBoundaryValues(run.stage_time, run.attempted_dt, run.previous, local,
                                              nullptr));
-  PetscCall(boundaryResultants(run, run.stage_time, local, zero, resultants));
-  PetscCall(interfaceForces(run, local, interface));
+  PetscCall(boundaryResultants(run, run.stage_time, run.attempted_dt, local, zero, resultants));
+  PetscCall(interfaceResultants(run, local, InterfaceRates{zero, run.attempted_dt}, interface));
   PetscCall(DMRestoreLocalVector(run.dm, &zero));
   PetscCall(DMRestoreLocalVector(run.dm, &local));
   const int dim = run.scene.dim;
   double sum = 0.0;
-  for (size_t i = 0; i < resultants.size(); ++i)
-    if ((int)(i % (dim + 1)) < dim) sum += std::fabs(resultants[i]); // forces, not fluxes
-  for (double f : interface)
-    sum += std::fabs(f);
+  const int per = dim + 1 + (run.scene.hasInterfacePressure() ? 1 : 0);
+  for (size_t b = 0; b < run.scene.boundaries.size(); ++b)
+    for (int d = 0; d < dim; ++d)
+      sum += std::fabs(resultants[b * per + d]);
+  size_t k = 0; // forces of each whole interface (its parts repeat them)
+  for (const auto &in : run.scene.interfaces) {
+    for (int d = 0; d < dim; ++d)
+      sum += std::fabs(interface[k + d]);
+    k += interfaceBlock(run.scene, in) * (1 + (in.surfaces.size() > 1 ? in.surfaces.size() : 0));
+  }
   *level = sum;
   PetscFunctionReturn(0);
 }
@@ -261,15 +334,25 @@ PetscErrorCode openTimeSeries(Run &run)
     for (int d = 0; d < run.scene.dim; ++d)
       std::fprintf(run.csv, ",%s.F%s", b.name.c_str(), axis[d]);
     if (run.scene.hasPressure()) std::fprintf(run.csv, ",%s.flux", b.name.c_str());
+    if (run.scene.hasInterfacePressure())
+      std::fprintf(run.csv, ",%s.interface_outflow", b.name.c_str());
   }
-  for (const auto &i : run.scene.interfaces) {
+  // Interface blocks as interfaceResultants writes them, then the interface outflows.
+  auto block = [&](const Interface &i, const std::string &name) {
     for (int d = 0; d < run.scene.dim; ++d)
-      std::fprintf(run.csv, ",%s.F%s", i.name.c_str(), axis[d]);
+      std::fprintf(run.csv, ",%s.F%s", name.c_str(), axis[d]);
+    if (i.flow)
+      std::fprintf(run.csv, ",%s.flux1,%s.flux2,%s.storage,%s.storage_rate", name.c_str(),
+                   name.c_str(), name.c_str(), name.c_str());
+  };
+  for (const auto &i : run.scene.interfaces) {
+    block(i, i.name);
     if (i.surfaces.size() > 1)
       for (const auto &s : i.surfaces)
-        for (int d = 0; d < run.scene.dim; ++d)
-          std::fprintf(run.csv, ",%s.%s.F%s", i.name.c_str(), s.c_str(), axis[d]);
+        block(i, i.name + "." + s);
   }
+  for (const auto &i : run.scene.interfaces)
+    if (i.flow) std::fprintf(run.csv, ",%s.outflow", i.name.c_str());
   for (const auto &p : run.scene.probes) {
     for (int d = 0; d < run.scene.dim; ++d)
       std::fprintf(run.csv, ",%s.u%s", p.name.c_str(), axis[d]);
@@ -283,22 +366,27 @@ PetscErrorCode openTimeSeries(Run &run)
 PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
                           PetscInt ksp, PetscInt rejected, double wall)
 {
-  std::vector<double> resultants, probes, interface_forces;
+  std::vector<double> resultants, probes, interface;
   PetscFunctionBeginUser;
-  PetscCall(boundaryResultants(run, t, local, rate, resultants));
-  PetscCall(interfaceForces(run, local, interface_forces));
+  PetscCall(boundaryResultants(run, t, dt, local, rate, resultants));
+  PetscCall(interfaceResultants(run, local, InterfaceRates{rate, dt}, interface));
   PetscCall(run.probes.evaluate(local, probes));
   if (run.csv) {
     const int dim = run.scene.dim;
     std::fprintf(run.csv, "%d,%.10e,%.10e,%.6g,%d,%d,%d,%.4e", run.step, t, dt,
                  run.problem.loadFactor(t), (int)newton, (int)ksp, (int)rejected, wall);
+    const int per = dim + 1 + (run.scene.hasInterfacePressure() ? 1 : 0);
     for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
       for (int d = 0; d < dim; ++d)
-        std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + d]);
-      if (run.scene.hasPressure()) std::fprintf(run.csv, ",%.10e", resultants[b * (dim + 1) + dim]);
+        std::fprintf(run.csv, ",%.10e", resultants[b * per + d]);
+      if (run.scene.hasPressure()) std::fprintf(run.csv, ",%.10e", resultants[b * per + dim]);
+      if (run.scene.hasInterfacePressure())
+        std::fprintf(run.csv, ",%.10e", resultants[b * per + dim + 1]);
     }
-    for (double v : interface_forces)
+    for (double v : interface)
       std::fprintf(run.csv, ",%.10e", v);
+    for (size_t i = 0, k = run.scene.boundaries.size() * per; i < run.scene.interfaces.size(); ++i)
+      if (run.scene.interfaces[i].flow) std::fprintf(run.csv, ",%.10e", resultants[k + i]);
     for (double v : probes)
       std::fprintf(run.csv, ",%.12e", v);
     std::fprintf(run.csv, "\n");
@@ -306,7 +394,8 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
   }
   if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0) {
     PetscCall(run.fields.write(t, local, run.initial));
-    PetscCall(run.interface_fields.write(t, run.problem.interfaces(), local));
+    PetscCall(
+        run.interface_fields.write(t, run.problem.interfaces(), local, InterfaceRates{rate, dt}));
   }
   PetscFunctionReturn(0);
 }

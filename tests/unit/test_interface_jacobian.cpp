@@ -113,10 +113,10 @@ PetscErrorCode compare(const Case &c, double *relative_error, int *states)
   }
   // Every integration point must be in the intended state.
   states[0] = states[1] = states[2] = 0;
-  PetscCall(
-      problem.interfaces().visit(local, [&](int, int, PetscInt, const InterfacePointState &st) {
-        ++states[(int)st.response.state];
-      }));
+  PetscCall(problem.interfaces().visit(local, InterfaceRates{},
+                                       [&](int, int, PetscInt, const InterfacePointState &st) {
+                                         ++states[(int)st.response.state];
+                                       }));
 
   auto residual = [&](Vec Xg, Vec Fg) -> PetscErrorCode {
     PetscFunctionBeginUser;
