@@ -1,0 +1,267 @@
+// The assembled Jacobian of a hydro-mechanical interface (three-node flow between two porous
+// bodies, with gravity) against central finite differences of the residual, block by block
+// over the fields u, p and p3: the mass rows are many orders smaller than the force rows, so a
+// single matrix norm would hide them. Rates come from a previous state, as in a time step
+// (dx/dt = (x - x_prev)/dt, shift 1/dt), so the storage term dh/dt is live. The gap is open
+// (aperture and storage follow the opening) or closed (h = D0), away from the kinks.
+#include "poroseam/interfaces.hpp"
+#include "poroseam/layout.hpp"
+#include "poroseam/mesh.hpp"
+#include "poroseam/problem.hpp"
+#include "poroseam/scene.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <random>
+#include <string>
+
+using namespace poroseam;
+
+namespace {
+
+struct FlowCase {
+  const char *name;
+  const char *mesh;
+  double size_factor;
+  double gap_normal; ///< block displacement along the last axis (+: opening)
+  double t2;         ///< transmissivity to side 2 (0: impervious)
+};
+
+PetscErrorCode setOption(const char *name, const std::string &value)
+{
+  return PetscOptionsSetValue(nullptr, name, value.c_str());
+}
+
+struct Result {
+  double max_error[3][3] = {{0}};
+  double max_entry[3][3] = {{0}};
+  int open = 0, closed = 0;
+};
+
+PetscErrorCode compare(const FlowCase &c, Result *res)
+{
+  DM dm;
+  Scene scene;
+  std::vector<PhysicalName> names;
+  int dim;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsClear(nullptr));
+  const std::string src = POROSEAM_SOURCE_DIR;
+  PetscCall(setOption("-mesh", src + "/meshes/" + c.mesh));
+  PetscCall(setOption("-regions", "base,block"));
+  for (const char *r : {"base", "block"}) {
+    const std::string p = std::string("-region_") + r + "_";
+    PetscCall(setOption((p + "material").c_str(), "biot"));
+    PetscCall(setOption((p + "E").c_str(), "1e8"));
+    PetscCall(setOption((p + "nu").c_str(), "0.25"));
+    PetscCall(setOption((p + "permeability").c_str(), "1e-11"));
+    PetscCall(setOption((p + "porosity").c_str(), "0.4"));
+    PetscCall(setOption((p + "rho_s").c_str(), "2650"));
+  }
+  PetscCall(setOption("-gravity", "9.81"));
+  PetscCall(setOption("-interfaces", "contact"));
+  PetscCall(setOption("-interface_contact_side1", "base"));
+  PetscCall(setOption("-interface_contact_KN", "1e10"));
+  PetscCall(setOption("-interface_contact_KT", "5e9"));
+  PetscCall(setOption("-interface_contact_friction", "0.5"));
+  PetscCall(setOption("-interface_contact_flow", "true"));
+  PetscCall(setOption("-interface_contact_D0", "1e-5"));
+  PetscCall(setOption("-interface_contact_T1", "1e-8"));
+  char t2[32];
+  std::snprintf(t2, sizeof(t2), "%g", c.t2); // std::to_string would print 5e-9 as 0.000000
+  PetscCall(setOption("-interface_contact_T2", t2));
+  PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
+  PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
+                         testing::TempDir() + "poroseam_mesh", &dm, &names, &dim));
+  PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
+  PetscCall(splitInterfaces(&dm, scene));
+  PetscCall(markLayoutLabels(dm, scene));
+  PetscCall(createSolutionSection(dm, scene));
+  Problem problem;
+  PetscCall(problem.setup(dm, scene));
+
+  PetscSection s;
+  PetscCall(DMGetLocalSection(dm, &s));
+  Vec local, rate, previous, flocal, X, Fp, Fm;
+  PetscCall(DMCreateLocalVector(dm, &local));
+  for (Vec *v : {&rate, &previous, &flocal})
+    PetscCall(VecDuplicate(local, v));
+  PetscCall(DMCreateGlobalVector(dm, &X));
+  PetscCall(VecDuplicate(X, &Fp));
+  PetscCall(VecDuplicate(X, &Fm));
+
+  // Block vertices (closure of block cells) get the gap; pressures get random values.
+  DMLabel cellSets;
+  PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
+  int blockTag = 0;
+  for (const auto &n : names)
+    if (n.name == "block") blockTag = n.tag;
+  PetscInt pStart, pEnd, cStart, cEnd;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  std::vector<char> inBlock(pEnd - pStart, 0);
+  for (PetscInt cell = cStart; cell < cEnd; ++cell) {
+    PetscInt tag;
+    PetscCall(DMLabelGetValue(cellSets, cell, &tag));
+    if (tag != blockTag) continue;
+    PetscInt n, *pts = nullptr;
+    PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
+    for (PetscInt k = 0; k < n; ++k)
+      inBlock[pts[2 * k] - pStart] = 1;
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
+  }
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> noise(-1.0, 1.0);
+  const double dt = 0.5;
+  std::vector<int> fieldOfLocal;
+  {
+    PetscScalar *u, *up;
+    PetscCall(problem.initialState(local));
+    PetscCall(VecGetArray(local, &u));
+    PetscCall(VecGetArray(previous, &up));
+    PetscInt nl;
+    PetscCall(VecGetLocalSize(local, &nl));
+    fieldOfLocal.assign(nl, 0);
+    for (PetscInt pt = pStart; pt < pEnd; ++pt)
+      for (int f = 0; f < 3; ++f) {
+        PetscInt dof, off;
+        PetscCall(PetscSectionGetFieldDof(s, pt, f, &dof));
+        if (!dof) continue;
+        PetscCall(PetscSectionGetFieldOffset(s, pt, f, &off));
+        for (PetscInt k = 0; k < dof; ++k) {
+          fieldOfLocal[off + k] = f;
+          if (f == 0) {
+            const bool last = k == dim - 1;
+            const double gap = inBlock[pt - pStart] && last ? c.gap_normal : 0.0;
+            u[off + k] = gap + 1e-9 * noise(rng);
+            up[off + k] =
+                (last && inBlock[pt - pStart] ? 0.5 * c.gap_normal : 0.0) + 1e-9 * noise(rng);
+          } else {
+            u[off + k] += 1e4 * noise(rng); // hydrostatic plus a random excess
+            up[off + k] = u[off + k] - 1e3 * noise(rng);
+          }
+        }
+      }
+    PetscCall(VecRestoreArray(previous, &up));
+    PetscCall(VecRestoreArray(local, &u));
+    PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, X));
+  }
+  PetscCall(problem.interfaces().visit(local, InterfaceRates{rate, dt},
+                                       [&](int, int, PetscInt, const InterfacePointState &st) {
+                                         (st.opening > 0.0 ? res->open : res->closed)++;
+                                       }));
+  const double mass_scale = -dt * problem.massBalanceScale();
+  auto residual = [&](Vec Xg, Vec Fg) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(DMGlobalToLocal(dm, Xg, INSERT_VALUES, local));
+    PetscCall(VecWAXPY(rate, -1.0, previous, local));
+    PetscCall(VecScale(rate, 1.0 / dt));
+    PetscCall(problem.residual(0.0, local, rate, ResidualMode{mass_scale, true, dt}, flocal));
+    PetscCall(VecSet(Fg, 0.0));
+    PetscCall(DMLocalToGlobal(dm, flocal, ADD_VALUES, Fg));
+    PetscFunctionReturn(0);
+  };
+  // Field of each global dof.
+  PetscInt n;
+  PetscCall(VecGetLocalSize(X, &n));
+  std::vector<int> field(n, 0);
+  {
+    Vec marker, g;
+    PetscCall(VecDuplicate(local, &marker));
+    PetscScalar *m;
+    PetscCall(VecGetArray(marker, &m));
+    for (size_t i = 0; i < fieldOfLocal.size(); ++i)
+      m[i] = fieldOfLocal[i];
+    PetscCall(VecRestoreArray(marker, &m));
+    PetscCall(DMGetGlobalVector(dm, &g));
+    PetscCall(DMLocalToGlobal(dm, marker, INSERT_VALUES, g));
+    const PetscScalar *gm;
+    PetscCall(VecGetArrayRead(g, &gm));
+    for (PetscInt i = 0; i < n; ++i)
+      field[i] = (int)std::lround(gm[i]);
+    PetscCall(VecRestoreArrayRead(g, &gm));
+    PetscCall(DMRestoreGlobalVector(dm, &g));
+    PetscCall(VecDestroy(&marker));
+  }
+  Mat J, Jd;
+  PetscCall(DMCreateMatrix(dm, &J));
+  PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
+  PetscCall(VecWAXPY(rate, -1.0, previous, local));
+  PetscCall(VecScale(rate, 1.0 / dt));
+  PetscCall(problem.jacobian(0.0, 1.0 / dt, local, rate, mass_scale, J));
+  PetscCall(MatConvert(J, MATDENSE, MAT_INITIAL_MATRIX, &Jd));
+  const PetscScalar *jd;
+  PetscCall(MatDenseGetArrayRead(Jd, &jd));
+  for (PetscInt j = 0; j < n; ++j) {
+    const double h = field[j] == 0 ? 1e-11 : 1e-2; // m, Pa: far below every kink distance
+    PetscCall(VecSetValue(X, j, h, ADD_VALUES));
+    PetscCall(VecAssemblyBegin(X));
+    PetscCall(VecAssemblyEnd(X));
+    PetscCall(residual(X, Fp));
+    PetscCall(VecSetValue(X, j, -2 * h, ADD_VALUES));
+    PetscCall(VecAssemblyBegin(X));
+    PetscCall(VecAssemblyEnd(X));
+    PetscCall(residual(X, Fm));
+    PetscCall(VecSetValue(X, j, h, ADD_VALUES));
+    PetscCall(VecAssemblyBegin(X));
+    PetscCall(VecAssemblyEnd(X));
+    const PetscScalar *fp, *fm;
+    PetscCall(VecGetArrayRead(Fp, &fp));
+    PetscCall(VecGetArrayRead(Fm, &fm));
+    for (PetscInt i = 0; i < n; ++i) {
+      const double fd = (fp[i] - fm[i]) / (2 * h);
+      double &err = res->max_error[field[i]][field[j]];
+      double &ref = res->max_entry[field[i]][field[j]];
+      err = std::max(err, std::fabs(fd - jd[i + j * n]));
+      ref = std::max(ref, std::fabs(fd));
+    }
+    PetscCall(VecRestoreArrayRead(Fp, &fp));
+    PetscCall(VecRestoreArrayRead(Fm, &fm));
+  }
+  PetscCall(MatDenseRestoreArrayRead(Jd, &jd));
+  PetscCall(MatDestroy(&Jd));
+  PetscCall(MatDestroy(&J));
+  for (Vec *v : {&local, &rate, &previous, &flocal, &X, &Fp, &Fm})
+    PetscCall(VecDestroy(v));
+  PetscCall(DMDestroy(&dm));
+  PetscCall(PetscOptionsClear(nullptr));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+class InterfaceFlowJacobian : public ::testing::TestWithParam<FlowCase> {};
+
+TEST_P(InterfaceFlowJacobian, EveryBlockMatchesFiniteDifferences)
+{
+  const FlowCase c = GetParam();
+  Result r;
+  ASSERT_EQ(compare(c, &r), 0);
+  std::printf("%s: %d open and %d closed points\n", c.name, r.open, r.closed);
+  if (c.gap_normal > 0)
+    EXPECT_EQ(r.closed, 0);
+  else
+    EXPECT_EQ(r.open, 0);
+  const char *names[3] = {"u", "p", "p3"};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (r.max_entry[i][j] == 0.0) continue; // no coupling (e.g. u-p3 is one way when closed)
+      const double rel = r.max_error[i][j] / r.max_entry[i][j];
+      std::printf("  block %s-%s: max |J - J_fd| / max |J_fd| = %.2e\n", names[i], names[j], rel);
+      EXPECT_LT(rel, 1e-6) << names[i] << "-" << names[j];
+    }
+  // The couplings the element must have.
+  EXPECT_GT(r.max_entry[2][2], 0.0);
+  EXPECT_GT(r.max_entry[0][2], 0.0);
+  EXPECT_GT(r.max_entry[2][1], 0.0);
+  if (c.gap_normal > 0)
+    EXPECT_GT(r.max_entry[2][0], 0.0) << "storage and conductivity follow the opening";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    States, InterfaceFlowJacobian,
+    ::testing::Values(FlowCase{"open2d", "block_on_base_2d.geo", 2.0, 2e-6, 5e-9},
+                      FlowCase{"closed2d", "block_on_base_2d.geo", 2.0, -2e-6, 5e-9},
+                      FlowCase{"open2d_impervious_side2", "block_on_base_2d.geo", 2.0, 2e-6, 0.0},
+                      FlowCase{"open3d", "block_on_base_3d.geo", 12.0, 2e-6, 5e-9}),
+    [](const auto &info) { return std::string(info.param.name); });
