@@ -19,6 +19,10 @@ namespace poroseam {
 ///    mean p'_N of the cell, 0 where mean p'_N = 0).
 ///  - "interface_points": every integration point as a Polyvertex at its position x, with
 ///    the same quantities unaveraged (mobilised_friction = |tau| / p'_N there).
+/// When some interface has flow (Scene::hasInterfacePressure()) both grids also carry
+/// interface_pressure, aperture, aperture_rate, longitudinal_flux (3-vector), transversal_flux1
+/// and transversal_flux2 (cell values: weighted averages; 0 on interfaces without flow and
+/// when write() gets no rate vector).
 /// Geometry, topology and the constant data (interface, surface, normal, area/weight, owning
 /// cell) are written at the first write(); every write() appends one time. The HDF5 layout
 /// is described in src/output/interface_writer.cpp; tests/support/interface_reader.py reads it.
@@ -34,7 +38,9 @@ public:
   /// outlive the writer.
   PetscErrorCode open(MPI_Comm comm, const Scene &scene, const std::string &dir);
   /// Appends one time: the interface state at `local_solution` (a local vector of the
-  /// solution DM with boundary values inserted). Returns at once without interfaces.
+  /// solution DM with boundary values inserted). `rates` (local rate vector and dt) are
+  /// needed for the hydraulic fields: without rates.rate they are written as 0. Returns at
+  /// once without interfaces.
   PetscErrorCode write(double time, const InterfaceMechanics &mech, Vec local_solution,
                        const InterfaceRates &rates = InterfaceRates{});
   /// Closes the HDF5 file and finishes the XDMF index (also called by the destructor).

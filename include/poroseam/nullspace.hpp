@@ -7,9 +7,9 @@
 
 namespace poroseam {
 
-/// If the PC of the TS's Newton solver is PCFIELDSPLIT, defines one split per non-empty field
-/// ("displacement", "pressure", "interface_pressure") and attaches the rigid-body modes to the
-/// displacement split.
+/// If the PC of the TS's Newton solver is PCFIELDSPLIT, defines the splits "displacement"
+/// (with the rigid-body modes attached as its near null space) and "pressure" (the bulk and
+/// the interface pressures together: a Schur complement takes exactly two splits).
 /// Call after TSSetFromOptions.
 PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene);
 

@@ -24,6 +24,12 @@
 //     shear_stress [N] or [N, 2]: local tau, shear_traction [N, 3] = sum_k tau_k e_(k+1),
 //     traction [N, 3] (on side 1, global), mobilised_friction [N] = |tau| / p'_N (0 where
 //     p'_N = 0), state [N, 1] int (0 open, 1 stick, 2 slip).
+//   Only when some interface of the scene has flow (Scene::hasInterfacePressure()), also:
+//     interface_pressure [N] (p3), aperture [N] (h = D0 + opening), aperture_rate [N] (dh/dt),
+//     longitudinal_flux [N, 3] (q_l, global, m2/s), transversal_flux1 [N] (side 1 -> gap) and
+//     transversal_flux2 [N] (gap -> side 2), m/s. They are 0 on interfaces without flow and
+//     everywhere when write() gets no rate vector (InterfaceMechanics::visit computes them
+//     only with rates.rate).
 //   Cell values are averages over the cell's points weighted by `weight`; the cell's
 //   mobilised_friction is |mean tau| / mean p'_N and its state the maximum over its points.
 // XDMF <dir>/interfaces.xmf: one Domain with two temporal collections, "interface_cells"
@@ -52,6 +58,8 @@ struct PointRecord {
   double gap_normal, opening, slip[2], slip_vector[3];
   double pressure, shear[2], shear_traction[3], traction[3];
   int state;
+  // Hydraulics (0 without flow).
+  double p3, aperture, aperture_rate, longitudinal_flux[3], transversal_flux1, transversal_flux2;
 };
 
 struct CellRecord {
@@ -68,6 +76,8 @@ struct Values {
   double pressure = 0, shear[2] = {0, 0}, shear_traction[3] = {0, 0, 0}, traction[3] = {0, 0, 0};
   double mobilised = 0;
   int state = 0;
+  double p3 = 0, aperture = 0, aperture_rate = 0, longitudinal_flux[3] = {0, 0, 0};
+  double transversal_flux1 = 0, transversal_flux2 = 0;
 };
 
 double mobilised(double pressure, const double shear[2], int t)
@@ -91,6 +101,13 @@ Values pointValues(const PointRecord &p, int t)
     v.traction[d] = p.traction[d];
   v.mobilised = mobilised(p.pressure, p.shear, t);
   v.state = p.state;
+  v.p3 = p.p3;
+  v.aperture = p.aperture;
+  v.aperture_rate = p.aperture_rate;
+  for (int d = 0; d < 3; ++d)
+    v.longitudinal_flux[d] = p.longitudinal_flux[d];
+  v.transversal_flux1 = p.transversal_flux1;
+  v.transversal_flux2 = p.transversal_flux2;
   return v;
 }
 
@@ -113,6 +130,13 @@ Values cellValues(const CellRecord &c, const std::vector<PointRecord> &points, i
       v.slip_vector[d] += w * p.slip_vector[d], v.shear_traction[d] += w * p.shear_traction[d],
           v.traction[d] += w * p.traction[d];
     v.state = std::max(v.state, p.state);
+    v.p3 += w * p.p3;
+    v.aperture += w * p.aperture;
+    v.aperture_rate += w * p.aperture_rate;
+    for (int d = 0; d < 3; ++d)
+      v.longitudinal_flux[d] += w * p.longitudinal_flux[d];
+    v.transversal_flux1 += w * p.transversal_flux1;
+    v.transversal_flux2 += w * p.transversal_flux2;
   }
   v.mobilised = mobilised(v.pressure, v.shear, t);
   return v;
@@ -130,6 +154,7 @@ struct InterfaceWriter::Impl {
   MPI_Comm comm = MPI_COMM_NULL;
   const Scene *scene = nullptr;
   bool enabled = false;
+  bool flow = false; // write the hydraulic fields
   int dim = 0;
   PetscViewer viewer = nullptr;
   std::string h5name = "interfaces.h5";
@@ -208,6 +233,14 @@ PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceMechanics &mech, Ve
                              p.shear_traction[i] += p.shear[k] * st.frame[k + 1][i];
                            }
                          p.state = static_cast<int>(st.response.state);
+                         const bool fl = st.flow;
+                         p.p3 = fl ? st.interface_pressure : 0.0;
+                         p.aperture = fl ? st.aperture : 0.0;
+                         p.aperture_rate = fl ? st.aperture_rate : 0.0;
+                         for (int i = 0; i < 3; ++i)
+                           p.longitudinal_flux[i] = fl && i < d ? st.longitudinal_flux[i] : 0.0;
+                         p.transversal_flux1 = fl ? st.transversal_flux1 : 0.0;
+                         p.transversal_flux2 = fl ? st.transversal_flux2 : 0.0;
                          points.push_back(p);
                        }));
   for (const CellRecord &c : cells)
@@ -370,6 +403,21 @@ PetscErrorCode InterfaceWriter::Impl::writeValues(const std::string &grid,
   for (const Values &v : values)
     state.push_back(v.state);
   PetscCall(xdmf::writeInts(viewer, comm, base + "state", s, 1, state, &time));
+  if (flow) {
+    PetscCall(xdmf::writeReals(viewer, comm, base + "interface_pressure", s, 1, scalar(&Values::p3),
+                               &time));
+    PetscCall(
+        xdmf::writeReals(viewer, comm, base + "aperture", s, 1, scalar(&Values::aperture), &time));
+    PetscCall(xdmf::writeReals(viewer, comm, base + "aperture_rate", s, 1,
+                               scalar(&Values::aperture_rate), &time));
+    PetscCall(xdmf::writeReals(
+        viewer, comm, base + "longitudinal_flux", s, 3,
+        vec([](const Values &v) -> const double * { return v.longitudinal_flux; }, 3), &time));
+    PetscCall(xdmf::writeReals(viewer, comm, base + "transversal_flux1", s, 1,
+                               scalar(&Values::transversal_flux1), &time));
+    PetscCall(xdmf::writeReals(viewer, comm, base + "transversal_flux2", s, 1,
+                               scalar(&Values::transversal_flux2), &time));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -390,6 +438,14 @@ std::vector<Attribute> InterfaceWriter::Impl::attributes(bool cells) const
   a.push_back({"traction", g + "fields/traction", 3, false, true});
   a.push_back({"mobilised_friction", g + "fields/mobilised_friction", 1, false, true});
   a.push_back({"state", g + "fields/state", 1, true, true});
+  if (flow) {
+    a.push_back({"interface_pressure", g + "fields/interface_pressure", 1, false, true});
+    a.push_back({"aperture", g + "fields/aperture", 1, false, true});
+    a.push_back({"aperture_rate", g + "fields/aperture_rate", 1, false, true});
+    a.push_back({"longitudinal_flux", g + "fields/longitudinal_flux", 3, false, true});
+    a.push_back({"transversal_flux1", g + "fields/transversal_flux1", 1, false, true});
+    a.push_back({"transversal_flux2", g + "fields/transversal_flux2", 1, false, true});
+  }
   // Constant.
   a.push_back({"interface", g + "interface", 1, true, false});
   a.push_back({"surface", g + "surface", 1, true, false});
@@ -500,6 +556,7 @@ PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const st
   im.scene = &scene;
   im.dim = scene.dim;
   im.enabled = !scene.interfaces.empty();
+  im.flow = scene.hasInterfacePressure();
   if (!im.enabled) PetscFunctionReturn(0);
   PetscCheck(im.dim == 2 || im.dim == 3, comm, PETSC_ERR_SUP,
              "InterfaceWriter: dimension %d not supported", im.dim);

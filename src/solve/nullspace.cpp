@@ -99,10 +99,27 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
   PetscCall(PetscObjectCompose((PetscObject)fields[kDisplacementField], "nearnullspace",
                                (PetscObject)modes));
   PetscCall(MatNullSpaceDestroy(&modes));
-  for (PetscInt f = 0; f < numFields; ++f) {
+  // Two splits, as a Schur complement needs: "displacement", and "pressure" holding the bulk
+  // and the interface pressures together (both diffusion-like: one AMG serves them).
+  IS pressures = nullptr;
+  if (numFields > kPressureField) {
+    PetscCall(ISDuplicate(fields[kPressureField], &pressures));
+    for (PetscInt f = kPressureField + 1; f < numFields; ++f) {
+      IS merged;
+      PetscCall(ISExpand(pressures, fields[f], &merged));
+      PetscCall(ISDestroy(&pressures));
+      pressures = merged;
+    }
+    PetscCall(ISSort(pressures));
+  }
+  PetscCall(PCFieldSplitSetIS(pc, "displacement", fields[kDisplacementField]));
+  if (pressures) {
     PetscInt size;
-    PetscCall(ISGetSize(fields[f], &size));
-    if (size > 0) PetscCall(PCFieldSplitSetIS(pc, names[f], fields[f])); // skip empty fields
+    PetscCall(ISGetSize(pressures, &size));
+    if (size > 0) PetscCall(PCFieldSplitSetIS(pc, "pressure", pressures));
+    PetscCall(ISDestroy(&pressures));
+  }
+  for (PetscInt f = 0; f < numFields; ++f) {
     PetscCall(PetscFree(names[f]));
     PetscCall(ISDestroy(&fields[f]));
   }

@@ -12,9 +12,12 @@
     out.cell_fields[i]     # dict name -> array for time i (cell values: point averages)
     out.point_coordinates  # (Np, dim) integration point positions
     out.point_fields[i]    # dict name -> array for time i (integration point values)
+    out.has_flow           # True when the hydraulic fields (FLOW_FIELDS) are present
   Constant data (interface, surface, normal, area; points: cell, point, weight, ...) are in
   every time's dict too. Vectors are (N, 3); 2-component arrays (slip and shear_stress in 3D)
-  are (N, 2); scalars (N,).
+  are (N, 2); scalars (N,). The hydraulic fields (interface_pressure, aperture, aperture_rate,
+  longitudinal_flux (N, 3), transversal_flux1, transversal_flux2) are written only when some
+  interface has flow: all of them or none.
 
 Command line: interface_reader.py <output_dir>  validates and prints a summary; the exit
 status is non-zero on any inconsistency.
@@ -43,6 +46,15 @@ TIME_FIELDS = (
     "mobilised_friction",
     "state",
 )
+# Written only when some interface of the scene has flow: all or none of them.
+FLOW_FIELDS = (
+    "interface_pressure",
+    "aperture",
+    "aperture_rate",
+    "longitudinal_flux",
+    "transversal_flux1",
+    "transversal_flux2",
+)
 
 
 class InterfaceOutputError(Exception):
@@ -60,6 +72,7 @@ class Interfaces:
         self.cell_fields = []
         self.point_coordinates = None
         self.point_fields = []
+        self.has_flow = False
 
     @property
     def num_cells(self):
@@ -245,6 +258,18 @@ def _read_collection(collection, output_dir, h5files, cells_grid, out, xmf):
             raise InterfaceOutputError("%s: attributes %s differ from the first time" % (ctx, sorted(fields)))
         if np.any((fields["state"] < 0) | (fields["state"] > 2)):
             raise InterfaceOutputError("%s: state outside 0..2" % ctx)
+        flow = [f for f in FLOW_FIELDS if f in fields]
+        if flow and len(flow) != len(FLOW_FIELDS):
+            raise InterfaceOutputError(
+                "%s: hydraulic attributes %s without %s" % (ctx, flow, [f for f in FLOW_FIELDS if f not in flow])
+            )
+        if flow:
+            for f in FLOW_FIELDS:
+                want = (count, 3) if f == "longitudinal_flux" else (count,)
+                if fields[f].shape != want:
+                    raise InterfaceOutputError("%s: %s of shape %s, expected %s" % (ctx, f, fields[f].shape, want))
+            if np.any(fields["aperture"] < 0):
+                raise InterfaceOutputError("%s: negative aperture" % ctx)
         fields_per_time.append(fields)
     return np.array(times, dtype=float), fields_per_time, ref_mesh
 
@@ -284,6 +309,9 @@ def read_interfaces(output_dir):
     out.times = ctimes
     out.cell_fields = cfields
     out.point_fields = pfields
+    out.has_flow = bool(cfields) and "aperture" in cfields[0]
+    if any(("aperture" in f) != out.has_flow for f in cfields + pfields):
+        raise InterfaceOutputError("%s: hydraulic attributes on some grids only" % xmf)
     if cmesh is not None:
         out.topology_type, out.cell_coordinates, out.cells = cmesh
         out.dim = out.cell_coordinates.shape[1]
@@ -329,6 +357,7 @@ def main(argv):
         )
     )
     print("  %d times: %s" % (len(out.times), " ".join("%g" % t for t in out.times)))
+    print("  hydraulic fields: %s" % ("yes" if out.has_flow else "no"))
     for label, per_time in (("cells", out.cell_fields), ("points", out.point_fields)):
         if not per_time:
             continue

@@ -2,7 +2,9 @@
 // with Gauss and nodal integration, 3D hexahedra and tetrahedra), moves the block rigidly by a
 // known vector relative to the base, writes two times, reads the HDF5 file back and checks
 // geometry, counts and every field; then validates the directory with
-// tests/support/interface_reader.py. Runs on 1 and 2 ranks.
+// tests/support/interface_reader.py. With interface flow (2D): a known opening and a linear
+// interface pressure p3, checks the hydraulic fields (p3, aperture, cubic-law flux, ...).
+// Runs on 1 and 2 ranks.
 #include "poroseam/interface_writer.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
@@ -354,6 +356,24 @@ void checkFields(PetscViewer viewer, const std::string &grid, int step, double t
   EXPECT_EQ(bad, 0) << grid << " state != slip";
 }
 
+// The Python reader validates the XDMF index against the HDF5 file (and reports whether the
+// hydraulic fields are there).
+void runReader(const std::string &out, const std::string &dir, bool flow)
+{
+  PetscMPIInt rank;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  int status = 0;
+  if (rank == 0) {
+    const std::string log = dir + "/reader.log";
+    const std::string cmd =
+        "/usr/bin/python3 '" + kSource + "/tests/support/interface_reader.py' '" + out + "' > '" +
+        log + "' 2>&1 && grep -q 'hydraulic fields: " + (flow ? "yes" : "no") + "' '" + log + "'";
+    status = std::system(cmd.c_str());
+  }
+  MPI_Bcast(&status, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+  EXPECT_EQ(status, 0) << "interface_reader.py failed, see " << dir << "/reader.log";
+}
+
 void runCase(const std::string &tag, const std::string &mesh, int dim,
              const std::string &integration)
 {
@@ -444,24 +464,19 @@ void runCase(const std::string &tag, const std::string &mesh, int dim,
     EXPECT_EQ(np, nc * npe);
   }
 
+  // No interface has flow: no hydraulic fields.
+  for (const char *f : {"/cells/fields/interface_pressure", "/points/fields/aperture"}) {
+    PetscBool has = PETSC_TRUE;
+    ASSERT_EQ(PetscViewerHDF5HasGroup(viewer, f, &has), 0);
+    EXPECT_FALSE(has) << f;
+  }
+
   checkFields(viewer, "cells", 0, 0.5, dim, nc, base, 1.0);
   checkFields(viewer, "cells", 1, 1.25, dim, nc, base, 2.0);
   checkFields(viewer, "points", 0, 0.5, dim, np, base, 1.0);
   checkFields(viewer, "points", 1, 1.25, dim, np, base, 2.0);
   PetscViewerDestroy(&viewer);
-
-  // The Python reader validates the XDMF index against the HDF5 file.
-  PetscMPIInt rank;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  int status = 0;
-  if (rank == 0) {
-    const std::string cmd = "/usr/bin/python3 '" + kSource +
-                            "/tests/support/interface_reader.py' '" + out + "' > '" + dir +
-                            "/reader.log' 2>&1";
-    status = std::system(cmd.c_str());
-  }
-  MPI_Bcast(&status, 1, MPI_INT, 0, PETSC_COMM_WORLD);
-  EXPECT_EQ(status, 0) << "interface_reader.py failed, see " << dir << "/reader.log";
+  runReader(out, dir, false);
 }
 
 TEST(InterfaceWriter, Quads2dGauss)
@@ -482,6 +497,156 @@ TEST(InterfaceWriter, Hexahedra3d)
 TEST(InterfaceWriter, Tetrahedra3d)
 {
   runCase("3d_tet", "", 3, "tet");
+}
+
+// Sets p3 = f(x) on every lateral edge carrying an interface pressure dof (x: its cone[0]
+// vertex); returns the number of such edges on all ranks (each counted on its owner).
+PetscErrorCode setInterfacePressure(const Model &m, Vec local, double (*f)(double), PetscInt *count)
+{
+  PetscSection s, gs, cs;
+  Vec coords;
+  PetscInt pStart, pEnd, n = 0;
+  PetscScalar *a;
+  const PetscScalar *x;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(m.dm, &s));
+  PetscCall(DMGetGlobalSection(m.dm, &gs));
+  PetscCall(DMGetCoordinateSection(m.dm, &cs));
+  PetscCall(DMGetCoordinatesLocal(m.dm, &coords));
+  PetscCall(DMPlexGetChart(m.dm, &pStart, &pEnd));
+  PetscCall(VecGetArray(local, &a));
+  PetscCall(VecGetArrayRead(coords, &x));
+  for (PetscInt pt = pStart; pt < pEnd; ++pt) {
+    DMPolytopeType t;
+    PetscCall(DMPlexGetCellType(m.dm, pt, &t));
+    if (t != DM_POLYTOPE_POINT_PRISM_TENSOR) continue;
+    PetscInt dof, off, coff;
+    PetscCall(PetscSectionGetFieldDof(s, pt, poroseam::kInterfacePressureField, &dof));
+    if (dof == 0) continue;
+    PetscCall(PetscSectionGetFieldOffset(s, pt, poroseam::kInterfacePressureField, &off));
+    const PetscInt *cone;
+    PetscCall(DMPlexGetCone(m.dm, pt, &cone));
+    PetscCall(PetscSectionGetOffset(cs, cone[0], &coff));
+    a[off] = f(PetscRealPart(x[coff]));
+    PetscInt gdof;
+    PetscCall(PetscSectionGetDof(gs, pt, &gdof));
+    if (gdof > 0) ++n; // negative on ghosts
+  }
+  PetscCall(VecRestoreArrayRead(coords, &x));
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(MPIU_Allreduce(&n, count, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+  PetscFunctionReturn(0);
+}
+
+double linearP3(double x)
+{
+  return 2e4 - 1e4 * x;
+}
+
+// 2D block on base, elastic bodies, an interface with flow (D0 = 1e-5, impervious sides): the
+// block lifted by 1e-5 (opening 1e-5, aperture 2e-5) and p3 = 2e4 - 1e4 x. Step 0 is written
+// with rates (zero rate, dt = 1), step 1 without (hydraulic fields 0).
+TEST(InterfaceWriter, Flow2d)
+{
+  const std::string dir = makeTempDir("flow");
+  ASSERT_FALSE(dir.empty());
+  Options o = sceneOptions(kSource + "/meshes/block_on_base_2d.geo", 2, "gauss");
+  o.push_back({"-interface_contact_flow", "1"});
+  o.push_back({"-interface_contact_D0", "1e-5"});
+  o.push_back({"-interface_contact_T1", "0"});
+  o.push_back({"-interface_contact_T2", "0"});
+  Model m;
+  ASSERT_EQ(buildModel(o, dir, m), 0);
+  ASSERT_TRUE(m.scene.hasInterfacePressure());
+  ASSERT_FALSE(m.scene.hasPressure());
+  const PetscInt expectCells = cohesiveCells(m.dm);
+  ASSERT_GT(expectCells, 0);
+
+  const double opening = 1e-5, D0 = 1e-5, h = D0 + opening, mu = 1e-3;
+  const double shift[3] = {0.0, opening, 0.0};
+  Vec u, rate;
+  PetscInt edges = 0;
+  ASSERT_EQ(blockShift(m, shift, &u), 0);
+  ASSERT_EQ(setInterfacePressure(m, u, linearP3, &edges), 0);
+  EXPECT_EQ(edges, expectCells + 1); // one per split vertex pair of the contact line
+  ASSERT_EQ(VecDuplicate(u, &rate), 0);
+  ASSERT_EQ(VecSet(rate, 0.0), 0);
+  const std::string out = dir + "/out";
+  {
+    poroseam::InterfaceWriter w;
+    ASSERT_EQ(w.open(PETSC_COMM_WORLD, m.scene, out), 0);
+    ASSERT_EQ(w.write(1.0, m.problem.interfaces(), u, poroseam::InterfaceRates{rate, 1.0}), 0);
+    ASSERT_EQ(w.write(2.0, m.problem.interfaces(), u), 0);
+    ASSERT_EQ(w.close(), 0);
+  }
+  VecDestroy(&u);
+  VecDestroy(&rate);
+
+  PetscViewer viewer;
+  ASSERT_EQ(PetscViewerHDF5Open(PETSC_COMM_SELF, (out + "/interfaces.h5").c_str(), FILE_MODE_READ,
+                                &viewer),
+            0);
+  Dataset xyz, px;
+  ASSERT_EQ(readReal(viewer, "/cells", "geometry", &xyz), 0);
+  ASSERT_EQ(readReal(viewer, "/points", "geometry", &px), 0);
+  const PetscInt nc = xyz.rows / 2, np = px.rows;
+  EXPECT_EQ(nc, expectCells);
+  const double q = h * h * h / (12.0 * mu) * 1e4; // -k dp3/dx, dp3/dx = -1e4
+  auto near = [](double x, double y, double scale) { return std::abs(x - y) <= 1e-9 * scale; };
+  for (const std::string grid : {"cells", "points"}) {
+    const PetscInt rows = grid == "cells" ? nc : np;
+    // Position of each row: the segment midpoint (the weighted mean of a linear function) or
+    // the point.
+    std::vector<double> xr(rows);
+    for (PetscInt i = 0; i < rows; ++i)
+      xr[i] = grid == "cells" ? 0.5 * (xyz(2 * i, 0) + xyz(2 * i + 1, 0)) : px(i, 0);
+    const std::string g = "/" + grid + "/fields/";
+    for (int step = 0; step < 2; ++step) {
+      const std::string s = std::to_string(step);
+      const bool with = step == 0; // rates given
+      Dataset a;
+      int bad = 0;
+      ASSERT_EQ(readReal(viewer, g + "interface_pressure", s, &a, true), 0);
+      EXPECT_DOUBLE_EQ(a.time, step == 0 ? 1.0 : 2.0);
+      ASSERT_EQ(a.rows, rows);
+      ASSERT_EQ(a.cols, 1);
+      for (PetscInt i = 0; i < rows; ++i)
+        bad += !near(a(i), with ? linearP3(xr[i]) : 0.0, 2e4);
+      EXPECT_EQ(bad, 0) << grid << " step " << step << " interface_pressure";
+      ASSERT_EQ(readReal(viewer, g + "aperture", s, &a), 0);
+      ASSERT_EQ(a.rows, rows);
+      for (PetscInt i = 0; i < rows; ++i)
+        bad += !near(a(i), with ? h : 0.0, h);
+      EXPECT_EQ(bad, 0) << grid << " step " << step << " aperture != " << h;
+      ASSERT_EQ(readReal(viewer, g + "longitudinal_flux", s, &a), 0);
+      ASSERT_EQ(a.rows, rows);
+      ASSERT_EQ(a.cols, 3);
+      for (PetscInt i = 0; i < rows; ++i) {
+        bad += !near(a(i, 0), with ? q : 0.0, q);
+        bad += !near(a(i, 1), 0.0, q) || a(i, 2) != 0.0;
+      }
+      EXPECT_EQ(bad, 0) << grid << " step " << step << " longitudinal_flux != (" << q << ", 0, 0)";
+      for (const char *f : {"aperture_rate", "transversal_flux1", "transversal_flux2"}) {
+        ASSERT_EQ(readReal(viewer, g + f, s, &a), 0);
+        ASSERT_EQ(a.rows, rows);
+        ASSERT_EQ(a.cols, 1);
+        for (PetscInt i = 0; i < rows; ++i)
+          bad += a(i) != 0.0;
+        EXPECT_EQ(bad, 0) << grid << " step " << step << " " << f << " != 0";
+      }
+      // The mechanics of the open interface.
+      ASSERT_EQ(readReal(viewer, g + "opening", s, &a), 0);
+      for (PetscInt i = 0; i < rows; ++i)
+        bad += !near(a(i), opening, opening);
+      ASSERT_EQ(readInt(viewer, g + "state", s, &a), 0);
+      for (PetscInt i = 0; i < rows; ++i)
+        bad += a(i) != 0;
+      EXPECT_EQ(bad, 0) << grid << " step " << step << " opening / open state";
+    }
+  }
+  PetscViewerDestroy(&viewer);
+  runReader(out, dir, true);
 }
 
 TEST(InterfaceWriter, NoInterfacesWritesNothing)
