@@ -10,6 +10,8 @@ Cases (--case):
             mu p'_N, then elastic unloading at K_T (stick again).
   reversals 50 stick/slip reversals of amplitude 2x the slip onset: every step converges
             without cut-back; prints the largest Newton count, which must stay <= 4.
+  --cutback forces every step to fail once and be cut: the history of the failed attempts must
+            be discarded, so the forces still follow the return mapping of the accepted steps.
   opening   the block is lifted by 2e-5 m instead: zero traction, and the gap measured by
             probes on both faces equals the applied separation.
   soft      50 reversals with soft bodies (E = 1e8 Pa, nu = 0.3) of amplitude 1e-3 m at the
@@ -136,13 +138,15 @@ def main():
     ap.add_argument("--case", choices=("ramp", "reversals", "opening", "oblique", "soft"), required=True)
     ap.add_argument("--integration", choices=("gauss", "nodal"), default="gauss")
     ap.add_argument("--ranks", type=int, default=1)
+    ap.add_argument("--cutback", action="store_true",
+                    help="force every step to be cut back once (history committed only on accepted steps)")
     args = ap.parse_args()
     if args.case == "oblique":
         return oblique(args)
     if args.case == "soft":
         return soft(args)
     scene = os.path.join(HERE, "shear_2d.opts")
-    out = common.output_dir(f"interface_{args.case}_{args.integration}_np{args.ranks}")
+    out = common.output_dir(f"interface_{args.case}_{args.integration}_np{args.ranks}{'_cut' if args.cutback else ''}")
     table = os.path.join(out, "ux.csv")
     if args.case == "ramp":
         times = [0, 20, 26]
@@ -161,6 +165,8 @@ def main():
              "-probe_below", "0.5,0.4999999", "-probe_above", "0.5,0.5000001"]
     if args.case == "opening":
         extra += ["-bc_top_uy", 2e-5, "-ts_max_time", 2]
+    if args.cutback:
+        extra += ["-test_fail_dt_above", 0.6]
     common.run(scene, out, extra, ranks=args.ranks)
     ts = common.read_timeseries(out)
     chk = common.Checks(f"interface {args.case} ({args.integration}, {args.ranks} rank(s))")
@@ -194,6 +200,8 @@ def main():
     if args.case == "reversals":
         chk.check("max Newton iterations per step (<= 4)", newton.max(), 4)
         chk.check("cut-backs", ts["rejected"].sum(), 0)
+    if args.cutback:
+        chk.check("every step was cut back (failed attempts discarded)", -ts["rejected"].min(), -1)
     chk.finish()
 
 
