@@ -72,6 +72,7 @@ private:
   struct Cell {
     PetscInt cell;
     int iface, surface, element;
+    int gauss_element; ///< Gauss rule of the same face, for lumped axisymmetric nodal weights
     /// Closure offsets per side-1 face vertex a: first displacement component on side 1 and
     /// on side 2, pressure on side 1 and 2 (-1: that side is not porous), p3 (-1: no flow).
     std::vector<int> u1, u2, p1, p2, p3;

@@ -91,6 +91,7 @@ struct Scene {
   std::vector<Interface> interfaces;
 
   bool drained = false;           ///< no pressure unknowns anywhere
+  bool axisymmetric = false;      ///< 2D meshes: x = r >= 0, y = z; quantities per full circle
   double gravity = 0.0;           ///< g [m/s2], along -y (2D) or -z (3D); 0 switches it off
   bool geostatic = false;         ///< K0 initial state
   double surface_elevation = 0.0; ///< soil surface [m] for the geostatic state

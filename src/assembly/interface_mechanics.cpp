@@ -123,6 +123,14 @@ PetscErrorCode InterfaceMechanics::setup(DM dm, const Scene &scene, InitialStres
       elementOf[key] = (int)elements_.size() - 1;
     }
     cell.element = elementOf[key];
+    const auto gkey = std::make_pair((int)ft, false);
+    if (!elementOf.count(gkey)) {
+      ReferenceElement g;
+      PetscCall(ReferenceElement::create(ft, &g));
+      elements_.push_back(g);
+      elementOf[gkey] = (int)elements_.size() - 1;
+    }
+    cell.gauss_element = elementOf[gkey];
     const ReferenceElement &e = elements_[cell.element];
 
     // Closure offsets. PETSc orders a closure field by field, point by point: all
@@ -341,6 +349,30 @@ PetscErrorCode InterfaceMechanics::loop(Vec local, const InterfaceRates &rates,
       st.face_vertices = e.num_vertices;
       st.face_coords = x1.data();
       st.weight = surfaceWeight(e, x1.data(), dim_, q);
+      if (scene_->axisymmetric) {
+        // A ring: forces and flows are for the full circle. Nodal points take the lumped
+        // weight int phi_q 2 pi r ds, not 2 pi r_q w_q, which would vanish on the axis and
+        // leave the pair of nodes there without a spring.
+        if (in.nodal_integration) {
+          const ReferenceElement &ge = elements_[cell.gauss_element];
+          double lumped = 0.0;
+          for (int k = 0; k < ge.num_quadrature; ++k) {
+            double r = 0.0, phi_q[8], xi[3];
+            for (int a = 0; a < ge.num_vertices; ++a)
+              r += ge.basis[k * ge.num_vertices + a] * x1[a * dim_];
+            for (int d = 0; d < ge.dim; ++d)
+              xi[d] = ge.quadrature_points[k * ge.dim + d];
+            ge.evaluate(xi, phi_q, nullptr);
+            lumped += surfaceWeight(ge, x1.data(), dim_, k) * phi_q[q] * 2.0 * M_PI * r;
+          }
+          st.weight = lumped;
+        } else {
+          double r = 0.0;
+          for (int a = 0; a < e.num_vertices; ++a)
+            r += phi[a] * x1[a * dim_];
+          st.weight *= 2.0 * M_PI * r;
+        }
+      }
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
           st.frame[i][j] = cell.frame[i][j];

@@ -129,6 +129,21 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     bc.size = cellSize(e, volume);
     cells_.push_back(bc);
   }
+  if (scene.axisymmetric && error.empty()) {
+    // x is the radius: the mesh must lie on one side of the axis x = 0.
+    const PetscScalar *xa;
+    PetscInt nx;
+    PetscCall(VecGetLocalSize(coords, &nx));
+    PetscCall(VecGetArrayRead(coords, &xa));
+    for (PetscInt k = 0; k < nx && error.empty(); k += dim_)
+      if (xa[k] < -1e-12) {
+        std::ostringstream msg;
+        msg << "-axisymmetric: the mesh has a vertex at x = " << xa[k]
+            << " < 0; x is the radius, the axis is x = 0";
+        error = msg.str();
+      }
+    PetscCall(VecRestoreArrayRead(coords, &xa));
+  }
   PetscCall(checkOnAllRanks(comm, error));
   {
     double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
@@ -331,6 +346,7 @@ struct CellKernel {
   bool with_pressure; // the cell assembles the mass balance (porous and not drained)
   double mass_scale;
   double gravity[3];
+  bool axisymmetric = false; // x = r, y = z: hoop strain u_r / r, weights 2 pi r
 
   template <class InitialStress, class InitialPressure>
   void operator()(const double *coords, const double *x, const double *xdot, int closure_size,
@@ -338,18 +354,42 @@ struct CellKernel {
                   double *J) const
   {
     const int nv = e.num_vertices, nu = nv * dim;
+    // Strain variation of each displacement dof (a, i) and the stress it causes:
+    // sym(e_i (x) grad phi_a), plus the hoop strain phi_a / r for radial dofs when
+    // axisymmetric (tensor index 2 is then the hoop direction, out of plane otherwise).
+    double variation[8 * 3][3][3], stress_of[8 * 3][3][3];
     for (int q = 0; q < e.num_quadrature; ++q) {
       PointGeometry g;
       mapQuadraturePoint(e, coords, q, g);
-      const double w = g.weight, *phi = g.phi, *dphi = g.grad_phi;
-      double eps[3][3] = {{0}}, sigma[3][3];
+      const double *phi = g.phi, *dphi = g.grad_phi;
+      const double r = g.x[0];
+      const double w = axisymmetric ? g.weight * 2.0 * M_PI * r : g.weight;
       for (int a = 0; a < nv; ++a)
-        for (int i = 0; i < dim; ++i)
+        for (int i = 0; i < dim; ++i) {
+          double(&de)[3][3] = variation[a * dim + i];
+          for (int m1 = 0; m1 < 3; ++m1)
+            for (int m2 = 0; m2 < 3; ++m2)
+              de[m1][m2] = 0.0;
           for (int j = 0; j < dim; ++j) {
-            const double c = 0.5 * x[a * dim + i] * dphi[a * dim + j];
-            eps[i][j] += c;
-            eps[j][i] += c;
+            de[i][j] += 0.5 * dphi[a * dim + j];
+            de[j][i] += 0.5 * dphi[a * dim + j];
           }
+          if (axisymmetric && i == 0) de[2][2] = phi[a] / r;
+          physics::elasticStress(m.moduli, de, stress_of[a * dim + i]);
+        }
+      auto trace = [](const double t[3][3]) { return t[0][0] + t[1][1] + t[2][2]; };
+      auto contract = [](const double s[3][3], const double t[3][3]) {
+        double v = 0.0;
+        for (int m1 = 0; m1 < 3; ++m1)
+          for (int m2 = 0; m2 < 3; ++m2)
+            v += s[m1][m2] * t[m1][m2];
+        return v;
+      };
+      double eps[3][3] = {{0}}, sigma[3][3];
+      for (int k = 0; k < nu; ++k)
+        for (int m1 = 0; m1 < 3; ++m1)
+          for (int m2 = 0; m2 < 3; ++m2)
+            eps[m1][m2] += x[k] * variation[k][m1][m2];
       physics::elasticStress(m.moduli, eps, sigma);
       double s0[3][3];
       stress0(g.x, s0);
@@ -361,52 +401,49 @@ struct CellKernel {
           for (int d = 0; d < dim; ++d) {
             grad_p[d] += dphi[a * dim + d] * x[nu + a];
             grad_pdot[d] += dphi[a * dim + d] * xdot[nu + a];
-            div_udot += dphi[a * dim + d] * xdot[a * dim + d];
           }
         }
+        for (int k = 0; k < nu; ++k)
+          div_udot += xdot[k] * trace(variation[k]);
       } else if (m.porous) {
         p = pressure0(g.x); // drained: the pore pressure keeps its initial value
       }
       const double alpha = m.porous ? m.biot.biot_coefficient : 0.0;
+      // R_u = (sigma'_0 + C:eps - alpha p I) : d eps - rho g . v
+      double total[3][3];
+      for (int m1 = 0; m1 < 3; ++m1)
+        for (int m2 = 0; m2 < 3; ++m2)
+          total[m1][m2] = s0[m1][m2] + sigma[m1][m2] - (m1 == m2 ? alpha * p : 0.0);
       for (int a = 0; a < nv; ++a)
-        for (int i = 0; i < dim; ++i) {
-          double r = -m.density * gravity[i] * phi[a];
-          for (int j = 0; j < dim; ++j)
-            r += (s0[i][j] + sigma[i][j] - (i == j ? alpha * p : 0.0)) * dphi[a * dim + j];
-          F[a * dim + i] += w * r;
-        }
+        for (int i = 0; i < dim; ++i)
+          F[a * dim + i] +=
+              w * (contract(total, variation[a * dim + i]) - m.density * gravity[i] * phi[a]);
       if (with_pressure) {
         double flux[3];
         physics::darcyFlux(m.biot, dim, grad_p, gravity, flux);
         const double content = physics::fluidContentRate(m.biot, div_udot, pdot);
         for (int a = 0; a < nv; ++a) {
-          double r = phi[a] * content;
+          double res = phi[a] * content;
           for (int d = 0; d < dim; ++d)
-            r += dphi[a * dim + d] * (-flux[d] + m.stabilization * grad_pdot[d]);
-          F[nu + a] += mass_scale * w * r;
+            res += dphi[a * dim + d] * (-flux[d] + m.stabilization * grad_pdot[d]);
+          F[nu + a] += mass_scale * w * res;
         }
       }
       if (!J) continue;
       const int S = closure_size;
+      for (int k = 0; k < nu; ++k)
+        for (int l = 0; l < nu; ++l)
+          J[k * S + l] += w * contract(stress_of[l], variation[k]);
+      if (!with_pressure) continue;
       for (int a = 0; a < nv; ++a)
         for (int b = 0; b < nv; ++b) {
-          for (int i = 0; i < dim; ++i)
-            for (int k = 0; k < dim; ++k) {
-              double v = 0.0;
-              for (int j = 0; j < dim; ++j)
-                for (int l = 0; l < dim; ++l)
-                  v += dphi[a * dim + j] * physics::elasticTangent(m.moduli, i, j, k, l) *
-                       dphi[b * dim + l];
-              J[(a * dim + i) * S + b * dim + k] += w * v;
-            }
-          if (!with_pressure) continue;
           double grad_grad = 0.0;
           for (int d = 0; d < dim; ++d)
             grad_grad += dphi[a * dim + d] * dphi[b * dim + d];
           for (int i = 0; i < dim; ++i) {
-            J[(a * dim + i) * S + nu + b] += -w * alpha * dphi[a * dim + i] * phi[b];
-            J[(nu + a) * S + b * dim + i] +=
-                mass_scale * w * shift * alpha * phi[a] * dphi[b * dim + i];
+            const double div = trace(variation[b * dim + i]);
+            J[(a * dim + i) * S + nu + b] += -w * alpha * trace(variation[a * dim + i]) * phi[b];
+            J[(nu + a) * S + b * dim + i] += mass_scale * w * shift * alpha * phi[a] * div;
           }
           J[(nu + a) * S + nu + b] +=
               mass_scale * w *
@@ -459,7 +496,8 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
     PetscCall(DMPlexVecGetClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
     PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
     F.assign(n, 0.0);
-    CellKernel kernel{e, dim_, m, pressure && m.porous, mode.mass_scale, {0, 0, 0}};
+    CellKernel kernel{
+        e, dim_, m, pressure && m.porous, mode.mass_scale, {0, 0, 0}, scene_->axisymmetric};
     for (int d = 0; d < dim_; ++d)
       kernel.gravity[d] = gravityVector(d);
     kernel(
@@ -488,8 +526,14 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
     const int nv = e.num_vertices, nu = nv * dim_;
     const int np = (int)n - nu;
     for (int q = 0; q < e.num_quadrature; ++q) {
-      const double w = surfaceWeight(e, xc, dim_, q);
       const double *phi = &e.basis[q * nv];
+      double w = surfaceWeight(e, xc, dim_, q);
+      if (scene_->axisymmetric) {
+        double r = 0.0;
+        for (int a = 0; a < nv; ++a)
+          r += phi[a] * xc[a * dim_];
+        w *= 2.0 * M_PI * r;
+      }
       for (int a = 0; a < nv; ++a) {
         if (bc.kind == BcKind::traction)
           for (int i = 0; i < dim_; ++i)
@@ -528,7 +572,8 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
     PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
     F.assign(n, 0.0);
     K.assign(n * n, 0.0);
-    CellKernel kernel{e, dim_, m, pressure && m.porous, mass_scale, {0, 0, 0}};
+    CellKernel kernel{
+        e, dim_, m, pressure && m.porous, mass_scale, {0, 0, 0}, scene_->axisymmetric};
     for (int d = 0; d < dim_; ++d)
       kernel.gravity[d] = gravityVector(d);
     kernel(

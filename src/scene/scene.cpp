@@ -470,6 +470,11 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   PetscBool flag = PETSC_FALSE;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-drained", &flag, nullptr));
   scene.drained = flag;
+  flag = PETSC_FALSE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-axisymmetric", &flag, nullptr));
+  scene.axisymmetric = flag;
+  PetscCheck(!scene.axisymmetric || dim == 2, comm, PETSC_ERR_USER_INPUT,
+             "-axisymmetric: needs a 2D mesh in the (r, z) = (x, y) plane; this mesh is %dD", dim);
   PetscCall(getReal("-gravity", &scene.gravity, nullptr));
   PetscCheck(scene.gravity >= 0.0, comm, PETSC_ERR_USER_INPUT,
              "-gravity %g: give the magnitude g >= 0 (it acts along -y in 2D, -z in 3D)",
@@ -530,6 +535,18 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   scene.conditions.clear();
   for (const auto &b : scene.boundaries)
     PetscCall(readBoundary(comm, scene, b, scene.conditions));
+  // An interface that can neither exchange water with its sides nor at its ends has an
+  // undetermined pressure level (only its gradient enters): the linear systems are singular.
+  const bool p3_prescribed =
+      std::any_of(scene.conditions.begin(), scene.conditions.end(),
+                  [](const BoundaryCondition &c) { return c.kind == BcKind::interface_pressure; });
+  for (const auto &i : scene.interfaces)
+    PetscCheck(!i.flow || i.transmissivity1 > 0.0 || i.transmissivity2 > 0.0 || p3_prescribed, comm,
+               PETSC_ERR_USER_INPUT,
+               "interface '%s' is sealed (-interface_%s_T1 0 and _T2 0) and no -bc_<b>_p3 is "
+               "given: its water pressure is undetermined. Give T1 or T2 > 0, or prescribe p3 "
+               "where it meets a boundary, or drop -interface_%s_flow",
+               i.name.c_str(), i.name.c_str(), i.name.c_str());
   PetscCall(checkOptionNames(comm, scene));
 
   double every = scene.output_every;

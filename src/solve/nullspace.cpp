@@ -10,7 +10,8 @@ namespace {
 
 /// Rigid-body modes restricted to the free displacement dofs, orthonormalised. Built by hand
 /// because MatNullSpaceCreateRigidBody needs whole blocks and constraints remove dofs.
-PetscErrorCode rigidBodyModes(DM dm, int dim, IS displacement, MatNullSpace *space)
+PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement,
+                              MatNullSpace *space)
 {
   PetscSection s, csec;
   Vec coords, local, global;
@@ -20,7 +21,9 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, IS displacement, MatNullSpace *spa
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(DMGetCoordinateSection(dm, &csec));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  const int count = dim == 2 ? 3 : 6;
+  // Axisymmetric: only the axial translation is free of strain (a radial displacement strains
+  // the hoop), but both translations are smooth, low-energy modes worth giving to AMG.
+  const int count = axisymmetric ? 2 : dim == 2 ? 3 : 6;
   std::vector<Vec> modes(count);
   PetscCall(DMGetLocalVector(dm, &local));
   PetscCall(DMGetGlobalVector(dm, &global));
@@ -95,7 +98,7 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
   IS *fields;
   PetscCall(DMCreateFieldIS(dm, &numFields, &names, &fields));
   MatNullSpace modes;
-  PetscCall(rigidBodyModes(dm, scene.dim, fields[kDisplacementField], &modes));
+  PetscCall(rigidBodyModes(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], &modes));
   PetscCall(PetscObjectCompose((PetscObject)fields[kDisplacementField], "nearnullspace",
                                (PetscObject)modes));
   PetscCall(MatNullSpaceDestroy(&modes));

@@ -44,23 +44,28 @@ def main():
     ap.add_argument("--dim", type=int, choices=(2, 3), default=2)
     ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--mesh", default=None, help="another mesh of the same geometry (triangles, tetrahedra)")
+    ap.add_argument("--axisymmetric", action="store_true",
+                    help="2D mesh as an axisymmetric solid cylinder (x = r): interface force q pi R^2")
     ap.add_argument("--parts", action="store_true",
                     help="the contact in two named parts: forces per part and their sum")
     args = ap.parse_args()
     if args.parts:
         return parts(args)
     scene = os.path.join(HERE, f"patch_{args.dim}d.opts")
-    chk = common.Checks(f"interface patch test {args.dim}D, {args.mesh or 'default mesh'}, {args.ranks} rank(s)")
+    chk = common.Checks(f"interface patch test {args.dim}D{' axisymmetric' if args.axisymmetric else ''}, "
+                        f"{args.mesh or 'default mesh'}, {args.ranks} rank(s)")
     worst = 0.0
     for rule in ("gauss", "nodal"):
         for ratio in (1e-2, 1.0, 1e2, 1e4):
             kn = ratio * E / (0.125 if args.dim == 2 else 0.25)
-            out = common.output_dir(f"patch_{args.dim}d_{rule}_{ratio:g}_np{args.ranks}")
+            out = common.output_dir(f"patch_{args.dim}d{'_axi' if args.axisymmetric else ''}_{rule}_{ratio:g}_np{args.ranks}")
             extra = ["-interface_contact_integration", rule, "-interface_contact_KN", kn,
                      "-interface_contact_KT", kn, "-region_base_nu", 0.3, "-region_block_nu", 0.3,
                      "-output_fields_every", 1]
             if args.mesh:
                 extra += ["-mesh", args.mesh]
+            if args.axisymmetric:
+                extra += ["-axisymmetric"]  # the left sides (x = 0) are the axis: ux = 0 there
             common.run(scene, out, extra, ranks=args.ranks)
             data = read_interfaces(out)
             p = data.point_fields[-1]["contact_pressure_effective"]
@@ -70,6 +75,10 @@ def main():
             worst = max(worst, err)
             chk.check(f"{rule:5s} K_N h/E = {ratio:<6g}: max |p'_N - q| / q over {len(p)} points", err, 1e-8)
             chk.check(f"{rule:5s} K_N h/E = {ratio:<6g}: max |tau| / q", shear, 1e-8)
+            if args.axisymmetric:
+                fy = common.read_timeseries(out)["contact.Fy"][-1]
+                chk.check(f"{rule:5s} K_N h/E = {ratio:<6g}: |F_y + q pi R^2| / (q pi R^2)",
+                          abs(fy + Q * np.pi) / (Q * np.pi), 1e-8)
     print(f"  worst patch-test error: {worst:.2e}")
     chk.finish()
 

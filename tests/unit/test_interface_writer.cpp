@@ -554,7 +554,7 @@ TEST(InterfaceWriter, Flow2d)
   Options o = sceneOptions(kSource + "/meshes/block_on_base_2d.geo", 2, "gauss");
   o.push_back({"-interface_contact_flow", "1"});
   o.push_back({"-interface_contact_D0", "1e-5"});
-  o.push_back({"-interface_contact_T1", "0"});
+  o.push_back({"-interface_contact_T1", "1e-9"});
   o.push_back({"-interface_contact_T2", "0"});
   Model m;
   ASSERT_EQ(buildModel(o, dir, m), 0);
