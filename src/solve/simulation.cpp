@@ -220,10 +220,11 @@ PetscErrorCode boundaryResultants(Run &run, double t, double dt, Vec local, Vec 
 
 /// Per interface, then per part when it has several: the force on side 1 from side 2
 /// [N, per m in 2D] and, with flow, the water from side 1 into the gap, from the gap into
-/// side 2 [m3/s], the water stored in the gap [m3] and its rate [m3/s].
+/// side 2 [m3/s], the water stored in the gap [m3] and its rate [m3/s], and the integral of p3
+/// over the interface [N]: the normal force the water in the gap exerts.
 int interfaceBlock(const Scene &scene, const Interface &i)
 {
-  return scene.dim + (i.flow ? 4 : 0);
+  return scene.dim + (i.flow ? 5 : 0);
 }
 
 PetscErrorCode interfaceResultants(Run &run, Vec local, const InterfaceRates &rates,
@@ -250,6 +251,7 @@ PetscErrorCode interfaceResultants(Run &run, Vec local, const InterfaceRates &ra
           mine[base + scene.dim + 1] += st.weight * st.transversal_flux2;
           mine[base + scene.dim + 2] += st.weight * st.aperture;
           mine[base + scene.dim + 3] += st.weight * st.aperture_rate;
+          mine[base + scene.dim + 4] += st.weight * st.interface_pressure;
         };
         add(first[iface]);
         if (in.surfaces.size() > 1) add(first[iface] + block * (1 + surface));
@@ -342,8 +344,8 @@ PetscErrorCode openTimeSeries(Run &run)
     for (int d = 0; d < run.scene.dim; ++d)
       std::fprintf(run.csv, ",%s.F%s", name.c_str(), axis[d]);
     if (i.flow)
-      std::fprintf(run.csv, ",%s.flux1,%s.flux2,%s.storage,%s.storage_rate", name.c_str(),
-                   name.c_str(), name.c_str(), name.c_str());
+      std::fprintf(run.csv, ",%s.flux1,%s.flux2,%s.storage,%s.storage_rate,%s.p3_force",
+                   name.c_str(), name.c_str(), name.c_str(), name.c_str(), name.c_str());
   };
   for (const auto &i : run.scene.interfaces) {
     block(i, i.name);
