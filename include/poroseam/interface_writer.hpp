@@ -2,7 +2,7 @@
 // that ParaView opens next to the bulk fields.
 #pragma once
 
-#include "poroseam/interface_mechanics.hpp"
+#include "poroseam/interface_assembly.hpp"
 #include "poroseam/scene.hpp"
 #include <petscvec.h>
 #include <string>
@@ -26,7 +26,7 @@ namespace poroseam {
 /// Geometry, topology and the constant data (interface, surface, normal, area/weight, owning
 /// cell) are written at the first write(); every write() appends one time. The HDF5 layout
 /// is described in src/output/interface_writer.cpp; tests/support/interface_reader.py reads it.
-/// Cells are ordered by rank, then in InterfaceMechanics::visit order. Collective on comm.
+/// Cells are ordered by rank, then in InterfaceAssembly::visit order. Collective on comm.
 class InterfaceWriter {
 public:
   InterfaceWriter() = default;
@@ -41,7 +41,7 @@ public:
   /// solution DM with boundary values inserted). `rates` (local rate vector and dt) are
   /// needed for the hydraulic fields: without rates.rate they are written as 0. Returns at
   /// once without interfaces.
-  PetscErrorCode write(double time, const InterfaceMechanics &mech, Vec local_solution,
+  PetscErrorCode write(double time, const InterfaceAssembly &mech, Vec local_solution,
                        const InterfaceRates &rates = InterfaceRates{});
   /// Closes the HDF5 file and finishes the XDMF index (also called by the destructor).
   PetscErrorCode close();

@@ -3,7 +3,7 @@
 // values, and the initial (geostatic) state. Point laws come from physics/.
 #pragma once
 
-#include "poroseam/interface_mechanics.hpp"
+#include "poroseam/interface_assembly.hpp"
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
 #include <map>
@@ -49,7 +49,7 @@ public:
 
   /// Commits integration-point history (interfaces) of a converged state.
   PetscErrorCode commit(Vec local) { return interfaces_.commit(local); }
-  const InterfaceMechanics &interfaces() const { return interfaces_; }
+  const InterfaceAssembly &interfaces() const { return interfaces_; }
 
   /// Factor S [Pa/m] that turns the mass balance times dt (a volume) into a force: the largest
   /// constrained modulus of the porous regions over their mean cell size. The solver
@@ -95,7 +95,7 @@ private:
   std::vector<BulkCell> cells_;
   std::vector<LoadedFace> faces_;
   std::vector<ConstrainedDof> constrained_;
-  InterfaceMechanics interfaces_;
+  InterfaceAssembly interfaces_;
   double mass_balance_scale_ = 1.0;
 };
 

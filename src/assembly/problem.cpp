@@ -102,7 +102,7 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(dm, c, &ct));
-    if (isCohesive(ct)) continue; // interfaces: InterfaceMechanics
+    if (isCohesive(ct)) continue; // interfaces: InterfaceAssembly
     PetscInt tag = -1;
     if (cellSets) PetscCall(DMLabelGetValue(cellSets, c, &tag));
     const int region = scene.regionIndexOfTag((int)tag);

@@ -2,7 +2,7 @@
 //
 // HDF5 layout of <dir>/interfaces.h5. Nc cells (one per cohesive cell: its side-1 face), Nn
 // cell nodes (every cell has its own copies, cell after cell), Np integration points; all in
-// rank order, then InterfaceMechanics::visit order. d = mesh dimension, t = d - 1 tangent
+// rank order, then InterfaceAssembly::visit order. d = mesh dimension, t = d - 1 tangent
 // components. Integers are PetscInt.
 //   /cells/geometry                  [Nn, d]  double  face vertex coordinates
 //   /cells/topology                  [Nc, n]  int     node indices (n = 2, 3 or 4; face closure
@@ -28,7 +28,7 @@
 //     interface_pressure [N] (p3), aperture [N] (h = D0 + opening), aperture_rate [N] (dh/dt),
 //     longitudinal_flux [N, 3] (q_l, global, m2/s), transversal_flux1 [N] (side 1 -> gap) and
 //     transversal_flux2 [N] (gap -> side 2), m/s. They are 0 on interfaces without flow and
-//     everywhere when write() gets no rate vector (InterfaceMechanics::visit computes them
+//     everywhere when write() gets no rate vector (InterfaceAssembly::visit computes them
 //     only with rates.rate).
 //   Cell values are averages over the cell's points weighted by `weight`; the cell's
 //   mobilised_friction is |mean tau| / mean p'_N and its state the maximum over its points.
@@ -168,7 +168,7 @@ struct InterfaceWriter::Impl {
   std::vector<PetscInt> local_cells;  // cohesive cell of each local output cell (for checks)
   std::vector<int> local_point_count; // integration points of each local output cell
 
-  PetscErrorCode collect(const InterfaceMechanics &mech, Vec local, const InterfaceRates &rates,
+  PetscErrorCode collect(const InterfaceAssembly &mech, Vec local, const InterfaceRates &rates,
                          std::vector<CellRecord> &cells, std::vector<PointRecord> &points) const;
   PetscErrorCode writeMesh(const std::vector<CellRecord> &cells,
                            const std::vector<PointRecord> &points);
@@ -178,7 +178,7 @@ struct InterfaceWriter::Impl {
   PetscErrorCode writeXdmf();
 };
 
-PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceMechanics &mech, Vec local,
+PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceAssembly &mech, Vec local,
                                               const InterfaceRates &rates,
                                               std::vector<CellRecord> &cells,
                                               std::vector<PointRecord> &points) const
@@ -247,7 +247,7 @@ PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceMechanics &mech, Ve
     if (c.count != static_cast<size_t>(points[c.first].num_points) || c.nodes < 2 || c.nodes > 4)
       bad = true;
   PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-             "%s: unexpected integration point sequence from InterfaceMechanics::visit", kWho);
+             "%s: unexpected integration point sequence from InterfaceAssembly::visit", kWho);
   PetscFunctionReturn(0);
 }
 
@@ -568,7 +568,7 @@ PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const st
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceWriter::write(double time, const InterfaceMechanics &mech,
+PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech,
                                       Vec local_solution, const InterfaceRates &rates)
 {
   PetscFunctionBeginUser;

@@ -46,7 +46,7 @@ struct InterfaceRates {
   double dt = 0.0;
 };
 
-class InterfaceMechanics {
+class InterfaceAssembly {
 public:
   /// Initial effective stress of a region at a point (for the initial contact pressure).
   using InitialStress = std::function<void(const double x[], int region_tag, double s[3][3])>;

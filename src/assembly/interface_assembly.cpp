@@ -1,4 +1,4 @@
-#include "poroseam/interface_mechanics.hpp"
+#include "poroseam/interface_assembly.hpp"
 
 #include "poroseam/collective_check.hpp"
 #include "poroseam/interface_flow.hpp"
@@ -75,7 +75,7 @@ void globalTraction(const physics::ContactResponse &r, const double e[3][3], int
 
 } // namespace
 
-PetscErrorCode InterfaceMechanics::setup(DM dm, const Scene &scene, InitialStress initial_stress)
+PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress initial_stress)
 {
   PetscFunctionBeginUser;
   dm_ = dm;
@@ -311,8 +311,8 @@ void surfaceGradients(const ReferenceElement &e, const double *x, int dim, int q
 } // namespace
 
 template <class Kernel>
-PetscErrorCode InterfaceMechanics::loop(Vec local, const InterfaceRates &rates,
-                                        Kernel &&kernel) const
+PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
+                                       Kernel &&kernel) const
 {
   PetscSection s, csec;
   Vec coords;
@@ -446,8 +446,8 @@ PetscErrorCode InterfaceMechanics::loop(Vec local, const InterfaceRates &rates,
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceMechanics::residual(Vec local, const InterfaceRates &rates,
-                                            double mass_scale, Vec f) const
+PetscErrorCode InterfaceAssembly::residual(Vec local, const InterfaceRates &rates,
+                                           double mass_scale, Vec f) const
 {
   PetscSection s;
   std::vector<double> F;
@@ -495,8 +495,8 @@ PetscErrorCode InterfaceMechanics::residual(Vec local, const InterfaceRates &rat
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceMechanics::jacobian(Vec local, const InterfaceRates &rates, double shift,
-                                            double mass_scale, Mat J) const
+PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rates, double shift,
+                                           double mass_scale, Mat J) const
 {
   PetscSection s, gs;
   std::vector<double> K;
@@ -589,7 +589,7 @@ PetscErrorCode InterfaceMechanics::jacobian(Vec local, const InterfaceRates &rat
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceMechanics::commit(Vec local)
+PetscErrorCode InterfaceAssembly::commit(Vec local)
 {
   std::vector<physics::ContactHistory> updated = committed_;
   PetscFunctionBeginUser;
@@ -603,7 +603,7 @@ PetscErrorCode InterfaceMechanics::commit(Vec local)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InterfaceMechanics::visit(
+PetscErrorCode InterfaceAssembly::visit(
     Vec local, const InterfaceRates &rates,
     const std::function<void(int, int, PetscInt, const InterfacePointState &)> &f) const
 {
