@@ -51,7 +51,11 @@ public:
   /// Initial effective stress of a region at a point (for the initial contact pressure).
   using InitialStress = std::function<void(const double x[], int region_tag, double s[3][3])>;
 
-  PetscErrorCode setup(DM dm, const Scene &scene, InitialStress initial_stress);
+  /// Initial (hydrostatic) pore pressure at a point.
+  using InitialPressure = std::function<double(const double x[])>;
+
+  PetscErrorCode setup(DM dm, const Scene &scene, InitialStress initial_stress,
+                       InitialPressure initial_pressure);
   bool empty() const { return cells_.empty(); }
 
   /// Adds the interface terms to the local residual f (ADD_ALL_VALUES); the mass balances
@@ -77,6 +81,9 @@ private:
     /// on side 2, pressure on side 1 and 2 (-1: that side is not porous), p3 (-1: no flow).
     std::vector<int> u1, u2, p1, p2, p3;
     bool flow = false, porous1 = false, porous2 = false;
+    /// Drained scene, interface without flow next to porous soil: the water in the gap keeps
+    /// its initial (hydrostatic) pressure and pushes both faces, as p3 does with flow.
+    bool gap_water = false;
     double frame[3][3];
     size_t history; ///< first entry in the history arrays
   };
@@ -90,6 +97,7 @@ private:
   std::vector<Cell> cells_;
   std::vector<physics::ContactInitial> initial_;
   std::vector<physics::ContactHistory> committed_;
+  InitialPressure initial_pressure_;
 };
 
 } // namespace poroseam

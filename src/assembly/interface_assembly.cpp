@@ -75,11 +75,13 @@ void globalTraction(const physics::ContactResponse &r, const double e[3][3], int
 
 } // namespace
 
-PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress initial_stress)
+PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress initial_stress,
+                                        InitialPressure initial_pressure)
 {
   PetscFunctionBeginUser;
   dm_ = dm;
   scene_ = &scene;
+  initial_pressure_ = std::move(initial_pressure);
   dim_ = scene.dim;
   cells_.clear();
   initial_.clear();
@@ -171,6 +173,9 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
     PetscCall(closureVertices(dm, face2, v2));
     std::vector<double> x1(v1.size() * dim_);
     cell.flow = in.flow;
+    const int side1_region = scene.regionIndexOfTag(in.side1_tag);
+    cell.gap_water = !in.flow && scene.drained && side1_region >= 0 &&
+                     scene.regions[side1_region].porous() && scene.gravity > 0.0;
     cell.porous1 = cell.porous2 = true;
     for (size_t a = 0; a < v1.size(); ++a) {
       PetscCall(vertexCoordinates(dm, v1[a], dim_, &x1[a * dim_]));
@@ -396,6 +401,14 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
       st.opening = physics::mechanicalOpening(params, initial_[h], st.gap_normal);
       double T[3][3];
       globalTraction(st.response, cell.frame, dim_, st.traction, T);
+      if (cell.gap_water) {
+        // Total normal pressure p'_N + p_w with the gap water at its hydrostatic pressure
+        // (fixed: no contribution to the tangent).
+        const double pw = initial_pressure_(st.x);
+        st.interface_pressure = pw;
+        for (int d = 0; d < dim_; ++d)
+          st.traction[d] -= pw * cell.frame[0][d];
+      }
       if (flow) {
         st.flow = true;
         surfaceGradients(e, x1.data(), dim_, q, fp.grad_phi);

@@ -160,9 +160,12 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     PetscCallMPI(MPI_Allreduce(&local[2], &global[2], 1, MPI_DOUBLE, MPI_MAX, comm));
     mass_balance_scale_ = global[1] > 0.0 ? global[2] / (global[0] / global[1]) : 1.0;
   }
-  PetscCall(interfaces_.setup(dm, scene, [this](const double x[], int tag, double s0[3][3]) {
-    initialStress(x, scene_->regionIndexOfTag(tag), s0);
-  }));
+  PetscCall(interfaces_.setup(
+      dm, scene,
+      [this](const double x[], int tag, double s0[3][3]) {
+        initialStress(x, scene_->regionIndexOfTag(tag), s0);
+      },
+      [this](const double x[]) { return initialPressure(x); }));
 
   // Faces carrying tractions or fluxes: integrated once, by the rank that owns the face.
   PetscSF sf;
