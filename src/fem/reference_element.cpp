@@ -6,6 +6,34 @@
 namespace poroseam {
 namespace {
 
+/// Inverse of a dim x dim matrix (dim <= 3) by cofactors; returns the determinant.
+double invert(int dim, const double A[3][3], double inv[3][3])
+{
+  if (dim == 1) {
+    inv[0][0] = 1.0 / A[0][0];
+    return A[0][0];
+  }
+  if (dim == 2) {
+    const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+    inv[0][0] = A[1][1] / det, inv[0][1] = -A[0][1] / det;
+    inv[1][0] = -A[1][0] / det, inv[1][1] = A[0][0] / det;
+    return det;
+  }
+  const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+                     A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                     A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+  inv[0][0] = (A[1][1] * A[2][2] - A[1][2] * A[2][1]) / det;
+  inv[0][1] = (A[0][2] * A[2][1] - A[0][1] * A[2][2]) / det;
+  inv[0][2] = (A[0][1] * A[1][2] - A[0][2] * A[1][1]) / det;
+  inv[1][0] = (A[1][2] * A[2][0] - A[1][0] * A[2][2]) / det;
+  inv[1][1] = (A[0][0] * A[2][2] - A[0][2] * A[2][0]) / det;
+  inv[1][2] = (A[0][2] * A[1][0] - A[0][0] * A[1][2]) / det;
+  inv[2][0] = (A[1][0] * A[2][1] - A[1][1] * A[2][0]) / det;
+  inv[2][1] = (A[0][1] * A[2][0] - A[0][0] * A[2][1]) / det;
+  inv[2][2] = (A[0][0] * A[1][1] - A[0][1] * A[1][0]) / det;
+  return det;
+}
+
 // Barycentric-type linear basis on a simplex: phi_a(xi) = c_a + g_a . xi, found by inverting
 // the affine map of the reference vertices (closure order).
 void simplexBasis(const ReferenceElement &e, const double xi[], double phi[], double dphi[])
@@ -18,26 +46,7 @@ void simplexBasis(const ReferenceElement &e, const double xi[], double phi[], do
       A[r][k] = e.vertex_coords[(k + 1) * d + r] - e.vertex_coords[r];
   // invert A (d <= 3)
   double inv[3][3] = {{0}};
-  if (d == 1) {
-    inv[0][0] = 1.0 / A[0][0];
-  } else if (d == 2) {
-    const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
-    inv[0][0] = A[1][1] / det, inv[0][1] = -A[0][1] / det;
-    inv[1][0] = -A[1][0] / det, inv[1][1] = A[0][0] / det;
-  } else {
-    const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
-                       A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
-                       A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
-    inv[0][0] = (A[1][1] * A[2][2] - A[1][2] * A[2][1]) / det;
-    inv[0][1] = (A[0][2] * A[2][1] - A[0][1] * A[2][2]) / det;
-    inv[0][2] = (A[0][1] * A[1][2] - A[0][2] * A[1][1]) / det;
-    inv[1][0] = (A[1][2] * A[2][0] - A[1][0] * A[2][2]) / det;
-    inv[1][1] = (A[0][0] * A[2][2] - A[0][2] * A[2][0]) / det;
-    inv[1][2] = (A[0][2] * A[1][0] - A[0][0] * A[1][2]) / det;
-    inv[2][0] = (A[1][0] * A[2][1] - A[1][1] * A[2][0]) / det;
-    inv[2][1] = (A[0][1] * A[2][0] - A[0][0] * A[2][1]) / det;
-    inv[2][2] = (A[0][0] * A[1][1] - A[0][1] * A[1][0]) / det;
-  }
+  invert(d, A, inv);
   double rel[3];
   for (int r = 0; r < d; ++r)
     rel[r] = xi[r] - e.vertex_coords[r];
@@ -273,29 +282,7 @@ double jacobian(int dim, int nv, const double *coords, const double *dphi, doubl
         s += coords[a * dim + r] * dphi[a * dim + k];
       J[r][k] = s;
     }
-  double det;
-  if (dim == 1) {
-    det = J[0][0];
-    invJ[0][0] = 1.0 / det;
-  } else if (dim == 2) {
-    det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-    invJ[0][0] = J[1][1] / det, invJ[0][1] = -J[0][1] / det;
-    invJ[1][0] = -J[1][0] / det, invJ[1][1] = J[0][0] / det;
-  } else {
-    det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
-          J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-          J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-    invJ[0][0] = (J[1][1] * J[2][2] - J[1][2] * J[2][1]) / det;
-    invJ[0][1] = (J[0][2] * J[2][1] - J[0][1] * J[2][2]) / det;
-    invJ[0][2] = (J[0][1] * J[1][2] - J[0][2] * J[1][1]) / det;
-    invJ[1][0] = (J[1][2] * J[2][0] - J[1][0] * J[2][2]) / det;
-    invJ[1][1] = (J[0][0] * J[2][2] - J[0][2] * J[2][0]) / det;
-    invJ[1][2] = (J[0][2] * J[1][0] - J[0][0] * J[1][2]) / det;
-    invJ[2][0] = (J[1][0] * J[2][1] - J[1][1] * J[2][0]) / det;
-    invJ[2][1] = (J[0][1] * J[2][0] - J[0][0] * J[2][1]) / det;
-    invJ[2][2] = (J[0][0] * J[1][1] - J[0][1] * J[1][0]) / det;
-  }
-  return det;
+  return invert(dim, J, invJ);
 }
 } // namespace
 
