@@ -25,7 +25,7 @@ foreach(case terzaghi_2d terzaghi_3d two_regions_2d)
 endforeach()
 
 # Solver presets (options/solvers/direct.opts, fieldsplit.opts) agree with MUMPS LU to 1e-6.
-foreach(case terzaghi_2d two_regions_2d elastic_2d block_shear_2d joint_column_2d gap_storage_2d)
+foreach(case terzaghi_2d two_regions_2d elastic_2d block_shear_2d joint_column_2d joint_realistic_2d)
   poroseam_scene_test(solvers.presets_${case} "solvers" mpi/solver_presets.py --case ${case})
   poroseam_scene_test(solvers.presets_${case}_np2 "solvers;mpi" mpi/solver_presets.py --case ${case} --ranks 2)
   set_tests_properties(solvers.presets_${case}_np2 PROPERTIES PROCESSORS 2)

@@ -3,6 +3,7 @@
 #include "poroseam/layout.hpp"
 
 #include <petscdmplex.h>
+#include <unordered_set>
 #include <vector>
 
 namespace poroseam {
@@ -81,6 +82,55 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement
 
 } // namespace
 
+namespace {
+
+/// Splits of the pressure split, in its own numbering: the bulk and the interface pressures.
+struct InnerSplits {
+  IS pressure = nullptr, interface_pressure = nullptr;
+  bool done = false;
+};
+
+PetscErrorCode destroyInnerSplits(void *ctx)
+{
+  InnerSplits *inner = static_cast<InnerSplits *>(ctx);
+  PetscFunctionBeginUser;
+  PetscCall(ISDestroy(&inner->pressure));
+  PetscCall(ISDestroy(&inner->interface_pressure));
+  delete inner;
+  PetscFunctionReturn(0);
+}
+
+/// Before the first solve: once the outer fieldsplit exists, give the Schur-complement solver
+/// of the "pressure" split its own splits "pressure" and "interface_pressure" when it is a
+/// fieldsplit itself (-fieldsplit_pressure_pc_type fieldsplit). PETSc sets up sub-solvers at
+/// their first use, so this comes in time.
+PetscErrorCode nameInnerSplits(KSP ksp, Vec, Vec, void *ctx)
+{
+  InnerSplits *inner = static_cast<InnerSplits *>(ctx);
+  PetscFunctionBeginUser;
+  if (inner->done) PetscFunctionReturn(0);
+  inner->done = true;
+  PC pc, schur_pc;
+  PetscInt n;
+  KSP *sub;
+  PetscCall(KSPSetUp(ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCFieldSplitGetSubKSP(pc, &n, &sub));
+  if (n == 2) {
+    PetscBool fieldsplit;
+    PetscCall(KSPGetPC(sub[1], &schur_pc));
+    PetscCall(PetscObjectTypeCompare((PetscObject)schur_pc, PCFIELDSPLIT, &fieldsplit));
+    if (fieldsplit) {
+      PetscCall(PCFieldSplitSetIS(schur_pc, "pressure", inner->pressure));
+      PetscCall(PCFieldSplitSetIS(schur_pc, "interface_pressure", inner->interface_pressure));
+    }
+  }
+  PetscCall(PetscFree(sub));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
 PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
 {
   SNES snes;
@@ -120,6 +170,37 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
     PetscInt size;
     PetscCall(ISGetSize(pressures, &size));
     if (size > 0) PetscCall(PCFieldSplitSetIS(pc, "pressure", pressures));
+    if (size > 0 && numFields > kInterfacePressureField) {
+      // The two kinds of pressure inside the pressure split, numbered as in that split.
+      const PetscInt *merged;
+      PetscInt nlocal, first = 0, np;
+      PetscCall(ISGetLocalSize(pressures, &nlocal));
+      PetscCall(ISGetIndices(pressures, &merged));
+      PetscCallMPI(
+          MPI_Exscan(&nlocal, &first, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+      const PetscInt *pidx;
+      PetscCall(ISGetLocalSize(fields[kPressureField], &np));
+      PetscCall(ISGetIndices(fields[kPressureField], &pidx));
+      std::vector<PetscInt> inner_p, inner_p3;
+      const std::unordered_set<PetscInt> bulk(pidx, pidx + np);
+      for (PetscInt k = 0; k < nlocal; ++k)
+        (bulk.count(merged[k]) ? inner_p : inner_p3).push_back(first + k);
+      PetscCall(ISRestoreIndices(fields[kPressureField], &pidx));
+      PetscCall(ISRestoreIndices(pressures, &merged));
+      auto *inner = new InnerSplits;
+      MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+      PetscCall(ISCreateGeneral(comm, (PetscInt)inner_p.size(), inner_p.data(), PETSC_COPY_VALUES,
+                                &inner->pressure));
+      PetscCall(ISCreateGeneral(comm, (PetscInt)inner_p3.size(), inner_p3.data(), PETSC_COPY_VALUES,
+                                &inner->interface_pressure));
+      PetscContainer owner;
+      PetscCall(PetscContainerCreate(comm, &owner));
+      PetscCall(PetscContainerSetPointer(owner, inner));
+      PetscCall(PetscContainerSetUserDestroy(owner, destroyInnerSplits));
+      PetscCall(PetscObjectCompose((PetscObject)ksp, "poroseam inner splits", (PetscObject)owner));
+      PetscCall(PetscContainerDestroy(&owner));
+      PetscCall(KSPSetPreSolve(ksp, nameInnerSplits, inner));
+    }
     PetscCall(ISDestroy(&pressures));
   }
   for (PetscInt f = 0; f < numFields; ++f) {

@@ -48,7 +48,14 @@ CASES = {
     "block_shear_2d": dict(scene="options/block_shear_2d.opts", args=["-output_fields_every", "10"]),
     "joint_column_2d": dict(scene="tests/hydraulics/joint_column_2d.opts",
                             args=["-ts_max_steps", "20", "-probe_low", "0.05,0.25", "-probe_high", "0.05,0.75", "-output_fields_every", "10"]),
-    "gap_storage_2d": dict(scene="tests/hydraulics/gap_storage_2d.opts", args=["-ts_max_steps", "6"]),
+    # the joint with caisson-like interface values (K_N = 1e10 Pa/m, T = 1e-8 m/(Pa s)), where
+    # the bulk and interface pressures can also have solvers of their own (nested preset)
+    "joint_realistic_2d": dict(scene="tests/hydraulics/joint_column_2d.opts",
+                               args=["-ts_max_steps", "20", "-interface_joint_KN", "1e10",
+                                     "-interface_joint_KT", "1e10", "-interface_joint_T1", "1e-8",
+                                     "-interface_joint_T2", "1e-8", "-probe_low", "0.05,0.25",
+                                     "-output_fields_every", "10"],
+                               extra_presets=["fieldsplit_nested"]),
 }
 
 
@@ -115,7 +122,8 @@ def main():
     common.run(scene, ref_dir, case["args"], ranks=a.ranks, timeout=120)
     ref = read_csv(ref_dir)
     checks = common.Checks(f"solver presets on {a.case}, {a.ranks} rank(s), vs the scene's MUMPS LU")
-    for preset in PRESETS:
+    presets = PRESETS + case.get("extra_presets", [])
+    for preset in presets:
         d = common.output_dir(f"solvers_{a.case}_np{a.ranks}_{preset}")
         opts = os.path.join(SOURCE, "options", "solvers", preset + ".opts")
         common.run(scene, d, case["args"] + ["-options_file", opts], ranks=a.ranks, timeout=120)
