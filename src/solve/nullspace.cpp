@@ -122,7 +122,10 @@ PetscErrorCode nameInnerSplits(KSP ksp, Vec, Vec, void *ctx)
     PetscCall(PetscObjectTypeCompare((PetscObject)schur_pc, PCFIELDSPLIT, &fieldsplit));
     if (fieldsplit) {
       PetscCall(PCFieldSplitSetIS(schur_pc, "pressure", inner->pressure));
-      PetscCall(PCFieldSplitSetIS(schur_pc, "interface_pressure", inner->interface_pressure));
+      if (inner->interface_pressure)
+        PetscCall(PCFieldSplitSetIS(schur_pc, "interface_pressure", inner->interface_pressure));
+      else // one split: it only applies the pressure solver (a Schur complement needs two)
+        PetscCall(PCFieldSplitSetType(schur_pc, PC_COMPOSITE_ADDITIVE));
     }
   }
   PetscCall(PetscFree(sub));
@@ -170,8 +173,9 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
     PetscInt size;
     PetscCall(ISGetSize(pressures, &size));
     if (size > 0) PetscCall(PCFieldSplitSetIS(pc, "pressure", pressures));
-    if (size > 0 && numFields > kInterfacePressureField) {
-      // The two kinds of pressure inside the pressure split, numbered as in that split.
+    if (size > 0) {
+      // The two kinds of pressure inside the pressure split, numbered as in that split (with
+      // no interface pressure, the bulk pressure is all of it).
       const PetscInt *merged;
       PetscInt nlocal, first = 0, np;
       PetscCall(ISGetLocalSize(pressures, &nlocal));
@@ -181,6 +185,7 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
       const PetscInt *pidx;
       PetscCall(ISGetLocalSize(fields[kPressureField], &np));
       PetscCall(ISGetIndices(fields[kPressureField], &pidx));
+      const bool with_p3 = numFields > kInterfacePressureField;
       std::vector<PetscInt> inner_p, inner_p3;
       const std::unordered_set<PetscInt> bulk(pidx, pidx + np);
       for (PetscInt k = 0; k < nlocal; ++k)
@@ -191,8 +196,9 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
       MPI_Comm comm = PetscObjectComm((PetscObject)dm);
       PetscCall(ISCreateGeneral(comm, (PetscInt)inner_p.size(), inner_p.data(), PETSC_COPY_VALUES,
                                 &inner->pressure));
-      PetscCall(ISCreateGeneral(comm, (PetscInt)inner_p3.size(), inner_p3.data(), PETSC_COPY_VALUES,
-                                &inner->interface_pressure));
+      if (with_p3)
+        PetscCall(ISCreateGeneral(comm, (PetscInt)inner_p3.size(), inner_p3.data(),
+                                  PETSC_COPY_VALUES, &inner->interface_pressure));
       PetscContainer owner;
       PetscCall(PetscContainerCreate(comm, &owner));
       PetscCall(PetscContainerSetPointer(owner, inner));
