@@ -8,6 +8,8 @@
 
 #include "poroseam/scene.hpp"
 #include <petscdmplex.h>
+#include <string>
+#include <vector>
 
 namespace poroseam {
 
@@ -22,6 +24,12 @@ constexpr const char *kPorousLabel = "porous closure";
 /// home of the interface pressure p3, the paper's middle nodes.
 constexpr const char *kInterfacePressureLabel = "interface pressure";
 std::string boundaryLabelName(const std::string &boundary);
+
+/// The lateral edges (interface pressure p3) of interfaces with flow that end on the named
+/// boundary: those whose vertex lies in the boundary's label. The one rule for where -bc_<b>_p3
+/// applies, shared by the section constraints, the boundary values and the reported outflows.
+PetscErrorCode lateralEdgesOnBoundary(DM dm, const std::string &boundary,
+                                      std::vector<PetscInt> &edges);
 
 /// Before distribution: marks the closure of porous cells and of every scene boundary.
 PetscErrorCode markLayoutLabels(DM dm, const Scene &scene);

@@ -213,29 +213,15 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     DMLabel label;
     PetscCall(DMGetLabel(dm, boundaryLabelName(bc.boundary).c_str(), &label));
     if (bc.kind == BcKind::interface_pressure) {
-      // Lateral edges (p3) whose vertices lie on the boundary, as in createSolutionSection.
-      DMLabel lateral;
-      PetscCall(DMGetLabel(dm, kInterfacePressureLabel, &lateral));
-      IS edges = nullptr;
-      if (lateral) PetscCall(DMLabelGetStratumIS(lateral, 1, &edges));
-      if (!edges) continue;
-      const PetscInt *idx;
-      PetscInt n;
-      PetscCall(ISGetLocalSize(edges, &n));
-      PetscCall(ISGetIndices(edges, &idx));
-      for (PetscInt k = 0; k < n; ++k) {
-        const PetscInt *cone;
-        PetscInt on = -1, dof = 0, off = 0;
-        PetscCall(DMPlexGetCone(dm, idx[k], &cone));
-        PetscCall(DMLabelGetValue(label, cone[0], &on));
-        if (on != 1) continue;
-        PetscCall(PetscSectionGetFieldDof(s, idx[k], kInterfacePressureField, &dof));
+      std::vector<PetscInt> edges;
+      PetscCall(lateralEdgesOnBoundary(dm, bc.boundary, edges));
+      for (PetscInt e : edges) {
+        PetscInt dof = 0, off = 0;
+        PetscCall(PetscSectionGetFieldDof(s, e, kInterfacePressureField, &dof));
         if (!dof) continue;
-        PetscCall(PetscSectionGetFieldOffset(s, idx[k], kInterfacePressureField, &off));
+        PetscCall(PetscSectionGetFieldOffset(s, e, kInterfacePressureField, &off));
         constrained_.push_back({off, (int)i});
       }
-      PetscCall(ISRestoreIndices(edges, &idx));
-      PetscCall(ISDestroy(&edges));
       continue;
     }
     IS points = nullptr;

@@ -11,6 +11,33 @@ std::string boundaryLabelName(const std::string &boundary)
   return "boundary " + boundary;
 }
 
+PetscErrorCode lateralEdgesOnBoundary(DM dm, const std::string &boundary,
+                                      std::vector<PetscInt> &edges)
+{
+  DMLabel lateral, label;
+  IS is = nullptr;
+  PetscFunctionBeginUser;
+  edges.clear();
+  PetscCall(DMGetLabel(dm, kInterfacePressureLabel, &lateral));
+  PetscCall(DMGetLabel(dm, boundaryLabelName(boundary).c_str(), &label));
+  if (lateral && label) PetscCall(DMLabelGetStratumIS(lateral, 1, &is));
+  if (!is) PetscFunctionReturn(0);
+  const PetscInt *idx;
+  PetscInt n;
+  PetscCall(ISGetLocalSize(is, &n));
+  PetscCall(ISGetIndices(is, &idx));
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscInt *cone;
+    PetscInt on = -1;
+    PetscCall(DMPlexGetCone(dm, idx[k], &cone));
+    PetscCall(DMLabelGetValue(label, cone[0], &on));
+    if (on == 1) edges.push_back(idx[k]);
+  }
+  PetscCall(ISRestoreIndices(is, &idx));
+  PetscCall(ISDestroy(&is));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
 {
   DMLabel cellSets, faceSets, porous;
@@ -116,23 +143,10 @@ PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
     DMLabel label;
     PetscCall(DMGetLabel(dm, boundaryLabelName(bc.boundary).c_str(), &label));
     if (bc.kind == BcKind::interface_pressure) {
-      // A lateral edge whose vertices lie on the boundary.
-      IS edges = nullptr;
-      if (lateral) PetscCall(DMLabelGetStratumIS(lateral, 1, &edges));
-      if (!edges) continue;
-      const PetscInt *idx;
-      PetscInt n;
-      PetscCall(ISGetLocalSize(edges, &n));
-      PetscCall(ISGetIndices(edges, &idx));
-      for (PetscInt i = 0; i < n; ++i) {
-        const PetscInt *cone;
-        PetscCall(DMPlexGetCone(dm, idx[i], &cone));
-        bool on;
-        PetscCall(inLabel(label, cone[0], &on));
-        if (on) constrained[idx[i] - pStart] |= 1u << (dim + 1);
-      }
-      PetscCall(ISRestoreIndices(edges, &idx));
-      PetscCall(ISDestroy(&edges));
+      std::vector<PetscInt> edges;
+      PetscCall(lateralEdgesOnBoundary(dm, bc.boundary, edges));
+      for (PetscInt e : edges)
+        constrained[e - pStart] |= 1u << (dim + 1);
       continue;
     }
     IS points = nullptr;

@@ -138,7 +138,20 @@ PetscErrorCode collectBoundaryDofs(Run &run)
     PetscCall(ISRestoreIndices(points, &idx));
     PetscCall(ISDestroy(&points));
   }
-  // Prescribed interface pressures, per interface (lateral edges, found from their star).
+  // Prescribed interface pressures per boundary (the rule of the section constraints)...
+  for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
+    std::vector<PetscInt> edges;
+    PetscCall(lateralEdgesOnBoundary(run.dm, run.scene.boundaries[b].name, edges));
+    for (PetscInt e : edges) {
+      PetscInt cdof = 0, off;
+      if (numFields > kInterfacePressureField)
+        PetscCall(PetscSectionGetFieldConstraintDof(s, e, kInterfacePressureField, &cdof));
+      if (!cdof) continue;
+      PetscCall(PetscSectionGetFieldOffset(s, e, kInterfacePressureField, &off));
+      run.boundary_dofs[b].interface_pressure.push_back(off);
+    }
+  }
+  // ... and per interface (lateral edges, found from their star).
   run.interface_end_dofs.assign(run.scene.interfaces.size(), {});
   DMLabel lateral, iface;
   PetscCall(DMGetLabel(run.dm, kInterfacePressureLabel, &lateral));
@@ -161,16 +174,6 @@ PetscErrorCode collectBoundaryDofs(Run &run)
         PetscCall(DMLabelGetValue(iface, star[2 * m], &which));
       PetscCall(DMPlexRestoreTransitiveClosure(run.dm, idx[k], PETSC_FALSE, &nstar, &star));
       if (which >= 1) run.interface_end_dofs[which - 1].push_back(off);
-      const PetscInt *cone;
-      PetscCall(DMPlexGetCone(run.dm, idx[k], &cone));
-      for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
-        DMLabel label;
-        PetscInt on = -1;
-        PetscCall(
-            DMGetLabel(run.dm, boundaryLabelName(run.scene.boundaries[b].name).c_str(), &label));
-        PetscCall(DMLabelGetValue(label, cone[0], &on));
-        if (on == 1) run.boundary_dofs[b].interface_pressure.push_back(off);
-      }
     }
     PetscCall(ISRestoreIndices(edges, &idx));
     PetscCall(ISDestroy(&edges));
@@ -311,7 +314,7 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
   if (*reason != SNES_CONVERGED_ITERATING || it == 0) PetscFunctionReturn(0);
   Vec X;
-  double level;
+  double level = 0.0;
   PetscCall(SNESGetSolution(snes, &X));
   PetscCall(forceLevel(run, X, &level));
   const double scale = std::max(run.zero_state_scale, level);
