@@ -7,7 +7,9 @@
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
 
+#include "central_differences.hpp"
 #include <cmath>
+
 #include <gtest/gtest.h>
 #include <petscdmplex.h>
 #include <random>
@@ -162,33 +164,15 @@ PetscErrorCode compareJacobian(int dim, Blocks *blocks)
   PetscCall(MatConvert(J, MATDENSE, MAT_INITIAL_MATRIX, &Jd));
   const PetscScalar *jd;
   PetscCall(MatDenseGetArrayRead(Jd, &jd));
-  for (PetscInt j = 0; j < n; ++j) {
-    const double h = 1e-6 * scale[j];
-    PetscCall(VecSetValue(X, j, h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    PetscCall(residual(X, Fp));
-    PetscCall(VecSetValue(X, j, -2.0 * h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    PetscCall(residual(X, Fm));
-    PetscCall(VecSetValue(X, j, h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    const PetscScalar *fp, *fm;
-    PetscCall(VecGetArrayRead(Fp, &fp));
-    PetscCall(VecGetArrayRead(Fm, &fm));
-    for (PetscInt i = 0; i < n; ++i) {
-      const double fd = (fp[i] - fm[i]) / (2.0 * h);
-      const double exact = jd[i + j * n]; // column-major
-      double &err = blocks->max_error[field[i]][field[j]];
-      double &ref = blocks->max_entry[field[i]][field[j]];
-      err = std::max(err, std::fabs(fd - exact));
-      ref = std::max(ref, std::fabs(fd));
-    }
-    PetscCall(VecRestoreArrayRead(Fp, &fp));
-    PetscCall(VecRestoreArrayRead(Fm, &fm));
-  }
+  PetscCall(poroseam::test_support::centralDifferences(
+      X, Fp, Fm, residual, [&](PetscInt j) { return 1e-6 * scale[j]; },
+      [&](PetscInt i, PetscInt j, double fd) {
+        const double exact = jd[i + j * n]; // column-major
+        double &err = blocks->max_error[field[i]][field[j]];
+        double &ref = blocks->max_entry[field[i]][field[j]];
+        err = std::max(err, std::fabs(fd - exact));
+        ref = std::max(ref, std::fabs(fd));
+      }));
   PetscCall(MatDenseRestoreArrayRead(Jd, &jd));
   PetscCall(MatDestroy(&Jd));
   PetscCall(MatDestroy(&J));

@@ -10,7 +10,9 @@
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
 
+#include "central_differences.hpp"
 #include <cmath>
+
 #include <gtest/gtest.h>
 #include <random>
 #include <string>
@@ -192,32 +194,17 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
   PetscCall(MatConvert(J, MATDENSE, MAT_INITIAL_MATRIX, &Jd));
   const PetscScalar *jd;
   PetscCall(MatDenseGetArrayRead(Jd, &jd));
-  for (PetscInt j = 0; j < n; ++j) {
-    const double h = field[j] == 0 ? 1e-11 : 1e-2; // m, Pa: far below every kink distance
-    PetscCall(VecSetValue(X, j, h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    PetscCall(residual(X, Fp));
-    PetscCall(VecSetValue(X, j, -2 * h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    PetscCall(residual(X, Fm));
-    PetscCall(VecSetValue(X, j, h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    const PetscScalar *fp, *fm;
-    PetscCall(VecGetArrayRead(Fp, &fp));
-    PetscCall(VecGetArrayRead(Fm, &fm));
-    for (PetscInt i = 0; i < n; ++i) {
-      const double fd = (fp[i] - fm[i]) / (2 * h);
-      double &err = res->max_error[field[i]][field[j]];
-      double &ref = res->max_entry[field[i]][field[j]];
-      err = std::max(err, std::fabs(fd - jd[i + j * n]));
-      ref = std::max(ref, std::fabs(fd));
-    }
-    PetscCall(VecRestoreArrayRead(Fp, &fp));
-    PetscCall(VecRestoreArrayRead(Fm, &fm));
-  }
+  PetscCall(poroseam::test_support::centralDifferences(
+      X, Fp, Fm, residual,
+      [&](PetscInt j) {
+        return field[j] == 0 ? 1e-11 : 1e-2 /* m, Pa: far below every kink distance */;
+      },
+      [&](PetscInt i, PetscInt j, double fd) {
+        double &err = res->max_error[field[i]][field[j]];
+        double &ref = res->max_entry[field[i]][field[j]];
+        err = std::max(err, std::fabs(fd - jd[i + j * n]));
+        ref = std::max(ref, std::fabs(fd));
+      }));
   PetscCall(MatDenseRestoreArrayRead(Jd, &jd));
   PetscCall(MatDestroy(&Jd));
   PetscCall(MatDestroy(&J));

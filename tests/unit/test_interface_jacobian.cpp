@@ -9,7 +9,9 @@
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
 
+#include "central_differences.hpp"
 #include <cmath>
+
 #include <gtest/gtest.h>
 #include <random>
 #include <string>
@@ -137,29 +139,12 @@ PetscErrorCode compare(const Case &c, double *relative_error, int *states)
   PetscCall(VecGetLocalSize(X, &n));
   double err = 0.0, ref = 0.0;
   const double h = 1e-11; // gaps are ~1e-6: far from every kink
-  for (PetscInt j = 0; j < n; ++j) {
-    PetscCall(VecSetValue(X, j, h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    PetscCall(residual(X, Fp));
-    PetscCall(VecSetValue(X, j, -2 * h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    PetscCall(residual(X, Fm));
-    PetscCall(VecSetValue(X, j, h, ADD_VALUES));
-    PetscCall(VecAssemblyBegin(X));
-    PetscCall(VecAssemblyEnd(X));
-    const PetscScalar *fp, *fm;
-    PetscCall(VecGetArrayRead(Fp, &fp));
-    PetscCall(VecGetArrayRead(Fm, &fm));
-    for (PetscInt i = 0; i < n; ++i) {
-      const double fd = (fp[i] - fm[i]) / (2 * h);
-      err = std::max(err, std::fabs(fd - jd[i + j * n]));
-      ref = std::max(ref, std::fabs(fd));
-    }
-    PetscCall(VecRestoreArrayRead(Fp, &fp));
-    PetscCall(VecRestoreArrayRead(Fm, &fm));
-  }
+  PetscCall(poroseam::test_support::centralDifferences(
+      X, Fp, Fm, residual, [&](PetscInt j) { return h; },
+      [&](PetscInt i, PetscInt j, double fd) {
+        err = std::max(err, std::fabs(fd - jd[i + j * n]));
+        ref = std::max(ref, std::fabs(fd));
+      }));
   *relative_error = err / ref;
   PetscCall(MatDenseRestoreArrayRead(Jd, &jd));
   PetscCall(MatDestroy(&Jd));
