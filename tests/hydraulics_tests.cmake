@@ -43,3 +43,28 @@ poroseam_scene_test(hydraulics.mpi_terzaghi_joint "hydraulics;interface;mpi"
 set_tests_properties(hydraulics.poiseuille_quad_mpi hydraulics.gap_storage_mpi
                      hydraulics.mass_balance_consolidation_mpi hydraulics.mpi_series
                      hydraulics.mpi_terzaghi_joint PROPERTIES PROCESSORS 2)
+
+# The same checks with the iterative preset options/solvers/fieldsplit.opts (named splits
+# displacement, pressures = {pressure, interface_pressure}) in place of the scenes' MUMPS LU:
+# the preset must converge on every hydraulics test, and give the same closed-form errors.
+# (The 1-vs-2-rank comparisons stay with LU: they check the partition, not the solver; the
+# preset itself is compared with LU on 1 and 2 ranks by solvers.presets_*.)
+function(hydraulics_fieldsplit_test name)
+  poroseam_scene_test(hydraulics.fieldsplit.${name} "hydraulics;interface;solvers" ${ARGN})
+  set_property(TEST hydraulics.fieldsplit.${name} APPEND PROPERTY ENVIRONMENT
+               "POROSEAM_SOLVER=fieldsplit")
+endfunction()
+foreach(mesh quad tri hex tet)
+  hydraulics_fieldsplit_test(poiseuille_${mesh} hydraulics/poiseuille.py --mesh ${mesh})
+endforeach()
+hydraulics_fieldsplit_test(poiseuille_quad_mpi hydraulics/poiseuille.py --mesh quad --ranks 2)
+hydraulics_fieldsplit_test(series_resistances hydraulics/joint_column.py --case series)
+hydraulics_fieldsplit_test(gap_storage hydraulics/gap_storage.py)
+hydraulics_fieldsplit_test(gap_storage_mpi hydraulics/gap_storage.py --ranks 2)
+hydraulics_fieldsplit_test(terzaghi_joint hydraulics/joint_column.py --case terzaghi)
+hydraulics_fieldsplit_test(one_sided_closed_gap hydraulics/joint_column.py --case one_sided)
+hydraulics_fieldsplit_test(mass_balance_consolidation hydraulics/mass_balance.py --case consolidation)
+hydraulics_fieldsplit_test(mass_balance_opening hydraulics/mass_balance.py --case opening)
+hydraulics_fieldsplit_test(mass_balance_consolidation_mpi hydraulics/mass_balance.py --case consolidation --ranks 2)
+set_tests_properties(hydraulics.fieldsplit.poiseuille_quad_mpi hydraulics.fieldsplit.gap_storage_mpi
+                     hydraulics.fieldsplit.mass_balance_consolidation_mpi PROPERTIES PROCESSORS 2)

@@ -100,10 +100,10 @@ PetscErrorCode destroyInnerSplits(void *ctx)
   PetscFunctionReturn(0);
 }
 
-/// Before the first solve: once the outer fieldsplit exists, give the Schur-complement solver
-/// of the "pressure" split its own splits "pressure" and "interface_pressure" when it is a
-/// fieldsplit itself (-fieldsplit_pressure_pc_type fieldsplit). PETSc sets up sub-solvers at
-/// their first use, so this comes in time.
+/// Before the first solve: once the outer fieldsplit exists, give the solver of the
+/// "pressures" split (the Schur complement) its own splits "pressure" and
+/// "interface_pressure" when it is a fieldsplit itself (-fieldsplit_pressures_pc_type
+/// fieldsplit). PETSc sets sub-solvers up at their first use, so this comes in time.
 PetscErrorCode nameInnerSplits(KSP ksp, Vec, Vec, void *ctx)
 {
   InnerSplits *inner = static_cast<InnerSplits *>(ctx);
@@ -124,7 +124,7 @@ PetscErrorCode nameInnerSplits(KSP ksp, Vec, Vec, void *ctx)
       PetscCall(PCFieldSplitSetIS(schur_pc, "pressure", inner->pressure));
       if (inner->interface_pressure)
         PetscCall(PCFieldSplitSetIS(schur_pc, "interface_pressure", inner->interface_pressure));
-      else // one split: it only applies the pressure solver (a Schur complement needs two)
+      else // one split: the inner fieldsplit just applies the pressure solver
         PetscCall(PCFieldSplitSetType(schur_pc, PC_COMPOSITE_ADDITIVE));
     }
   }
@@ -155,8 +155,9 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
   PetscCall(PetscObjectCompose((PetscObject)fields[kDisplacementField], "nearnullspace",
                                (PetscObject)modes));
   PetscCall(MatNullSpaceDestroy(&modes));
-  // Two splits, as a Schur complement needs: "displacement", and "pressure" holding the bulk
-  // and the interface pressures together (both diffusion-like: one AMG serves them).
+  // Two splits, as a Schur complement needs: "displacement", and "pressures" holding the bulk
+  // and the interface pressures together; inside it, "pressure" and "interface_pressure"
+  // (nameInnerSplits).
   IS pressures = nullptr;
   if (numFields > kPressureField) {
     PetscCall(ISDuplicate(fields[kPressureField], &pressures));
@@ -172,10 +173,10 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
   if (pressures) {
     PetscInt size;
     PetscCall(ISGetSize(pressures, &size));
-    if (size > 0) PetscCall(PCFieldSplitSetIS(pc, "pressure", pressures));
+    if (size > 0) PetscCall(PCFieldSplitSetIS(pc, "pressures", pressures));
     if (size > 0) {
-      // The two kinds of pressure inside the pressure split, numbered as in that split (with
-      // no interface pressure, the bulk pressure is all of it).
+      // The two kinds of pressure inside the pressures split, numbered as in that split
+      // (with no interface pressure, the bulk pressure is all of it).
       const PetscInt *merged;
       PetscInt nlocal, first = 0, np;
       PetscCall(ISGetLocalSize(pressures, &nlocal));

@@ -20,6 +20,7 @@ Prints the Krylov iterations per time step (mean, min, max) of each preset.
 
 import argparse
 import os
+import re
 import sys
 
 import numpy as np
@@ -48,14 +49,12 @@ CASES = {
     "block_shear_2d": dict(scene="options/block_shear_2d.opts", args=["-output_fields_every", "10"]),
     "joint_column_2d": dict(scene="tests/hydraulics/joint_column_2d.opts",
                             args=["-ts_max_steps", "20", "-probe_low", "0.05,0.25", "-probe_high", "0.05,0.75", "-output_fields_every", "10"]),
-    # the joint with caisson-like interface values (K_N = 1e10 Pa/m, T = 1e-8 m/(Pa s)), where
-    # the bulk and interface pressures can also have solvers of their own (nested preset)
+    # the joint with caisson-like interface values (K_N = 1e10 Pa/m, T = 1e-8 m/(Pa s))
     "joint_realistic_2d": dict(scene="tests/hydraulics/joint_column_2d.opts",
                                args=["-ts_max_steps", "20", "-interface_joint_KN", "1e10",
                                      "-interface_joint_KT", "1e10", "-interface_joint_T1", "1e-8",
                                      "-interface_joint_T2", "1e-8", "-probe_low", "0.05,0.25",
-                                     "-output_fields_every", "10"],
-                               extra_presets=["fieldsplit_nested"]),
+                                     "-output_fields_every", "10"]),
 }
 
 
@@ -108,6 +107,31 @@ def compare_timeseries(checks, label, ref, run, rtol):
     checks.check(f"{label}: timeseries largest relative difference ({worst_name})", worst, rtol)
 
 
+def check_split_names(checks, preset, log_path):
+    """Every -fieldsplit_* option of the preset is used exactly when its split exists: the
+    splits displacement, pressures (pressure, interface_pressure) are named as the preset
+    says. A split exists when the run reports unknowns of its field."""
+    with open(log_path) as f:
+        log = f.read()
+    fields = set(re.findall(r"^field (\w+) +[1-9]\d* unknowns", log, re.M))
+    unused = set(re.findall(r"option -(fieldsplit_\w+) .*never used", log))
+    expected = set()
+    with open(os.path.join(SOURCE, "options", "solvers", preset + ".opts")) as f:
+        for line in f:
+            words = line.split("#", 1)[0].split()
+            if not words or not words[0].startswith("-fieldsplit_"):
+                continue
+            name = words[0][1:]
+            if (name.startswith("fieldsplit_pressures") and "pressure" not in fields) or (
+                    "interface_pressure" in name and "interface_pressure" not in fields):
+                expected.add(name)
+    print(f"  {preset}: fields {sorted(fields)}; unused split options {sorted(unused)}")
+    checks.check(f"{preset}: split options used exactly for the fields present "
+                 f"(unexpectedly unused {sorted(unused - expected)}, "
+                 f"unexpectedly used {sorted(expected - unused)})",
+                 len(unused ^ expected), 0)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--case", required=True, choices=sorted(CASES))
@@ -135,6 +159,8 @@ def main():
               f"max {its.max():.0f} over {len(its)} steps; Newton per step max "
               f"{run[1][1:, h.index('newton_its')].max():.0f}", flush=True)
         checks.check(f"{preset}: rejected (cut) steps", rejected.sum(), 0)
+        if preset.startswith("fieldsplit"):
+            check_split_names(checks, preset, os.path.join(d, "log.txt"))
         compare_timeseries(checks, preset, ref, run, a.rtol)
         compare_fields(checks, preset, read_fields(ref_dir), read_fields(d), a.rtol,
                        names=("displacement", "pressure"))

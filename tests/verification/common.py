@@ -6,6 +6,9 @@ from the source tree):
     POROSEAM_EXE          the executable            (default <source>/build/poroseam)
     POROSEAM_SOURCE       the source tree           (default: two levels above this file)
     POROSEAM_TEST_OUTPUT  scratch directory         (default /tmp/poroseam-test-output)
+    POROSEAM_SOLVER       a preset of options/solvers/ (e.g. fieldsplit) added after every
+                          run's options, so a driver checks its closed form with that solver;
+                          outputs then go to a sub-directory solver-<preset> of the scratch one
 """
 
 import os
@@ -20,6 +23,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.environ.get("POROSEAM_SOURCE", os.path.dirname(os.path.dirname(HERE)))
 EXE = os.environ.get("POROSEAM_EXE", os.path.join(SOURCE, "build", "poroseam"))
 OUTPUT_ROOT = os.environ.get("POROSEAM_TEST_OUTPUT", "/tmp/poroseam-test-output")
+SOLVER = os.environ.get("POROSEAM_SOLVER", "")
+SOLVER_OPTIONS = []
+if SOLVER:
+    SOLVER_OPTIONS = ["-options_file", os.path.join(SOURCE, "options", "solvers", SOLVER + ".opts")]
+    if not os.path.isfile(SOLVER_OPTIONS[1]):
+        sys.exit(f"POROSEAM_SOLVER={SOLVER}: no preset {SOLVER_OPTIONS[1]}")
+    OUTPUT_ROOT = os.path.join(OUTPUT_ROOT, "solver-" + SOLVER)
 
 sys.path.insert(0, os.path.join(SOURCE, "tests", "support"))
 import analytic  # noqa: E402  (tests/support/analytic.py)
@@ -58,6 +68,7 @@ def run(scene, out_dir, args=(), ranks=1, timeout=300):
     if not os.path.isfile(EXE):
         fail(f"poroseam executable not found: {EXE} (set POROSEAM_EXE)")
     cmd = [EXE, "-options_file", scene, "-output_dir", out_dir] + [str(a) for a in args]
+    cmd += SOLVER_OPTIONS
     if ranks > 1:
         cmd = ["mpiexec", "-n", str(ranks)] + cmd
     env = dict(os.environ)
