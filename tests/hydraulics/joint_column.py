@@ -158,8 +158,20 @@ def terzaghi(args, chk):
     ds = np.max(np.abs(ts["top.uy"] - tr["top.uy"])) / s_ref
     chk.check("same run without the joint: max |p - p_nojoint| / q (all steps, 4 probes)", dp, 1e-4)
     chk.check("same run without the joint: max |s - s_nojoint| / (qH/M_c)", ds, 1e-4)
+    flux_max = np.max(np.abs(ts["joint.flux1"]))
+    tol = 1e-8  # a direct solve: round-off
+    if common.SOLVER:
+        # An iterative linear solver leaves the mass rows exact only to the Newton test:
+        # |F| <= 1e-9 x force level (the sum of the boundary and joint force magnitudes), and a
+        # mass row is a water rate times dt S, S = M_c / h (problem.cpp), h = 0.05 m here; the
+        # joint's imbalance sums its 3 interface-pressure rows (factor sqrt 3).
+        level = sum(np.abs(ts[f"{b}.F{c}"]) for b in ("top", "bottom", "left", "right", "joint")
+                    for c in "xy")
+        bound = np.max(np.sqrt(3) * 1e-9 * level / (ts["dt"] * 1.2e7 / 0.05)) / flux_max
+        print(f"  iterative solver ({common.SOLVER}): bound from the Newton test {bound:.2e}")
+        tol = max(tol, bound)
     chk.check("water through the joint: |flux1 - flux2| / max|flux1| (closed gap, no storage)",
-              np.max(np.abs(ts["joint.flux1"] - ts["joint.flux2"])) / np.max(np.abs(ts["joint.flux1"])), 1e-8)
+              np.max(np.abs(ts["joint.flux1"] - ts["joint.flux2"])) / flux_max, tol)
     return out
 
 
