@@ -28,10 +28,8 @@ set_tests_properties(caisson.axisym_drained caisson.axisym_partially_drained
 # (three named splits; sliding skirts make the displacement block unsymmetric): the same checks
 # must pass, without cut-backs.
 foreach(case axisym_partially_drained quarter_partially_drained)
-  poroseam_scene_test(caisson.fieldsplit.${case} "caisson;solvers"
-                      caisson/caisson.py --case ${case} --ranks 2)
-  set_property(TEST caisson.fieldsplit.${case} APPEND PROPERTY ENVIRONMENT
-               "POROSEAM_SOLVER=fieldsplit")
+  poroseam_preset_test(fieldsplit caisson.fieldsplit.${case} "caisson;solvers"
+                       caisson/caisson.py --case ${case} --ranks 2)
   set_tests_properties(caisson.fieldsplit.${case} PROPERTIES PROCESSORS 2 TIMEOUT 600)
 endforeach()
 # The quarter with the preset takes about a minute: start it first, not last, on a fresh build.

@@ -173,8 +173,8 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
   if (pressures) {
     PetscInt size;
     PetscCall(ISGetSize(pressures, &size));
-    if (size > 0) PetscCall(PCFieldSplitSetIS(pc, "pressures", pressures));
     if (size > 0) {
+      PetscCall(PCFieldSplitSetIS(pc, "pressures", pressures));
       // The two kinds of pressure inside the pressures split, numbered as in that split
       // (with no interface pressure, the bulk pressure is all of it).
       const PetscInt *merged;

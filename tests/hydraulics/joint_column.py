@@ -163,11 +163,11 @@ def terzaghi(args, chk):
     if common.SOLVER:
         # An iterative linear solver leaves the mass rows exact only to the Newton test:
         # |F| <= 1e-9 x force level (the sum of the boundary and joint force magnitudes), and a
-        # mass row is a water rate times dt S, S = M_c / h (problem.cpp), h = 0.05 m here; the
-        # joint's imbalance sums its 3 interface-pressure rows (factor sqrt 3).
+        # mass row is a water rate times dt S, S = M_c / h (problem.cpp), h = 0.05 m (the
+        # scene's mesh); the joint's imbalance sums its 3 interface-pressure rows (sqrt 3).
         level = sum(np.abs(ts[f"{b}.F{c}"]) for b in ("top", "bottom", "left", "right", "joint")
                     for c in "xy")
-        bound = np.max(np.sqrt(3) * 1e-9 * level / (ts["dt"] * 1.2e7 / 0.05)) / flux_max
+        bound = np.max(np.sqrt(3) * 1e-9 * level / (ts["dt"] * Mc / 0.05)) / flux_max
         print(f"  iterative solver ({common.SOLVER}): bound from the Newton test {bound:.2e}")
         tol = max(tol, bound)
     chk.check("water through the joint: |flux1 - flux2| / max|flux1| (closed gap, no storage)",

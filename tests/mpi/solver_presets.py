@@ -116,15 +116,11 @@ def check_split_names(checks, preset, log_path):
     fields = set(re.findall(r"^field (\w+) +[1-9]\d* unknowns", log, re.M))
     unused = set(re.findall(r"option -(fieldsplit_\w+) .*never used", log))
     expected = set()
-    with open(os.path.join(SOURCE, "options", "solvers", preset + ".opts")) as f:
-        for line in f:
-            words = line.split("#", 1)[0].split()
-            if not words or not words[0].startswith("-fieldsplit_"):
-                continue
-            name = words[0][1:]
-            if (name.startswith("fieldsplit_pressures") and "pressure" not in fields) or (
-                    "interface_pressure" in name and "interface_pressure" not in fields):
-                expected.add(name)
+    for option in common.read_scene(os.path.join(SOURCE, "options", "solvers", preset + ".opts")):
+        name = option[1:]
+        if (name.startswith("fieldsplit_pressures") and "pressure" not in fields) or (
+                "interface_pressure" in name and "interface_pressure" not in fields):
+            expected.add(name)
     print(f"  {preset}: fields {sorted(fields)}; unused split options {sorted(unused)}")
     checks.check(f"{preset}: split options used exactly for the fields present "
                  f"(unexpectedly unused {sorted(unused - expected)}, "
