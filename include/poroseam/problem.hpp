@@ -4,6 +4,7 @@
 #pragma once
 
 #include "poroseam/interface_assembly.hpp"
+#include "poroseam/log_events.hpp"
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
 #include <map>
@@ -47,6 +48,9 @@ public:
   PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate, double mass_scale,
                           Mat J) const;
 
+  /// Profiling: residual and Jacobian, bulk and interface terms, become -log_view events.
+  void setLogEvents(const LogEvents &events) { events_ = events; }
+
   /// Commits integration-point history (interfaces) of a converged state.
   PetscErrorCode commit(Vec local) { return interfaces_.commit(local); }
   const InterfaceAssembly &interfaces() const { return interfaces_; }
@@ -84,6 +88,9 @@ private:
   };
 
   PetscErrorCode elementIndex(DMPolytopeType type, int *index);
+  /// residual() without its log event (it has several exits).
+  PetscErrorCode assembleResidual(double t, Vec local, Vec local_rate, const ResidualMode &mode,
+                                  Vec f) const;
   void initialStress(const double x[], int region, double stress[3][3]) const;
   double gravityVector(int d) const;
 
@@ -97,6 +104,7 @@ private:
   std::vector<ConstrainedDof> constrained_;
   InterfaceAssembly interfaces_;
   double mass_balance_scale_ = 1.0;
+  LogEvents events_;
 };
 
 } // namespace poroseam

@@ -467,6 +467,16 @@ CellMaterial materialOf(const Scene &scene, const Region &r, double cell_size)
 PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const ResidualMode &mode,
                                  Vec f) const
 {
+  PetscFunctionBeginUser;
+  PetscCall(beginLogEvent(events_.residual));
+  PetscCall(assembleResidual(t, local, local_rate, mode, f));
+  PetscCall(endLogEvent(events_.residual));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
+                                         const ResidualMode &mode, Vec f) const
+{
   PetscSection s, csec;
   Vec coords;
   PetscFunctionBeginUser;
@@ -499,7 +509,9 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
     // ADD_ALL_VALUES keeps the entries of constrained dofs: they are the reactions.
     PetscCall(DMPlexVecSetClosure(dm_, s, f, cell.cell, F.data(), ADD_ALL_VALUES));
   }
+  PetscCall(beginLogEvent(events_.interface_residual));
   PetscCall(interfaces_.residual(local, InterfaceRates{local_rate, mode.dt}, mode.mass_scale, f));
+  PetscCall(endLogEvent(events_.interface_residual));
   if (!mode.include_loads) PetscFunctionReturn(0);
   // Natural conditions: R_u -= int t . v, R_p += s int psi q_n.
   for (const auto &face : faces_) {
@@ -544,6 +556,7 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
   PetscSection s, gs, csec;
   Vec coords;
   PetscFunctionBeginUser;
+  PetscCall(beginLogEvent(events_.jacobian));
   PetscCall(MatZeroEntries(J));
   PetscCall(DMGetLocalSection(dm_, &s));
   PetscCall(DMGetGlobalSection(dm_, &gs));
@@ -574,10 +587,13 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
     PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &x));
     PetscCall(DMPlexMatSetClosure(dm_, s, gs, J, cell.cell, K.data(), ADD_VALUES));
   }
+  PetscCall(beginLogEvent(events_.interface_jacobian));
   PetscCall(interfaces_.jacobian(local, InterfaceRates{local_rate, shift > 0.0 ? 1.0 / shift : 0.0},
                                  shift, mass_scale, J));
+  PetscCall(endLogEvent(events_.interface_jacobian));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(endLogEvent(events_.jacobian));
   PetscFunctionReturn(0);
 }
 

@@ -4,6 +4,7 @@
 #include "poroseam/interface_writer.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
+#include "poroseam/log_events.hpp"
 #include "poroseam/mesh.hpp"
 #include "poroseam/nullspace.hpp"
 #include "poroseam/probes.hpp"
@@ -50,6 +51,10 @@ struct Run {
   double stage_time = 0.0;       ///< time of the step being solved
   double reference_rtol = 1e-9;  ///< -snes_reference_rtol
   double ksp_rtol = 0.0;         ///< -ksp_rtol: the linear tolerance of a step's first solve
+  /// Profiling: -log_view events and phases of this run, and whether the first Jacobian
+  /// (PsFirstJacobian) is behind us.
+  LogEvents events;
+  bool jacobian_assembled = false;
 };
 
 PetscErrorCode currentDt(Run &run, double *dt)
@@ -95,8 +100,13 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   double dt;
   PetscFunctionBeginUser;
   PetscCall(currentDt(run, &dt));
+  // The first assembly also sets up the matrix's communication: part of the set-up cost.
+  const bool first = !run.jacobian_assembled;
+  if (first) PetscCall(beginLogEvent(run.events.first_jacobian));
   PetscCall(
       run.problem.jacobian(t, shift, local, local_rate, -dt * run.problem.massBalanceScale(), P));
+  if (first) PetscCall(endLogEvent(run.events.first_jacobian));
+  run.jacobian_assembled = true;
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -392,6 +402,7 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
 {
   std::vector<double> resultants, probes, interface;
   PetscFunctionBeginUser;
+  PetscCall(beginLogEvent(run.events.output));
   PetscCall(boundaryResultants(run, t, dt, local, rate, resultants));
   PetscCall(interfaceResultants(run, local, InterfaceRates{rate, dt}, interface));
   PetscCall(run.probes.evaluate(local, probes));
@@ -421,6 +432,7 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
     PetscCall(
         run.interface_fields.write(t, run.problem.interfaces(), local, InterfaceRates{rate, dt}));
   }
+  PetscCall(endLogEvent(run.events.output));
   PetscFunctionReturn(0);
 }
 
@@ -522,6 +534,8 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(registerLogEvents(&run.events));
+  run.problem.setLogEvents(run.events);
   PetscCall(readMeshOptions(comm, run.scene));
   if (rank == 0) {
     const std::string cmd = "mkdir -p '" + run.scene.output_dir + "'";
@@ -531,13 +545,18 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   }
   std::vector<PhysicalName> names;
   int dim;
+  PetscCall(beginLogPhase(run.events.mesh));
   PetscCall(loadGmshMesh(comm, run.scene.mesh_file, run.scene.mesh_size_factor,
                          run.scene.output_dir + "/mesh", &run.dm, &names, &dim));
   PetscCall(readSceneOptions(comm, names, dim, run.scene));
   PetscCall(splitInterfaces(&run.dm, run.scene));
   PetscCall(markLayoutLabels(run.dm, run.scene));
+  PetscCall(endLogPhase(run.events.mesh));
+  PetscCall(beginLogPhase(run.events.distribution));
   PetscCall(distributeMesh(&run.dm));
   PetscCall(checkCellOrientation(run.dm));
+  PetscCall(endLogPhase(run.events.distribution));
+  PetscCall(beginLogPhase(run.events.layout));
   PetscCall(createSolutionSection(run.dm, run.scene));
   PetscCall(run.problem.setup(run.dm, run.scene));
   PetscCall(run.probes.setup(run.dm, run.scene));
@@ -597,6 +616,11 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(TSGetTimeStep(run.ts, &run.nominal_dt));
   PetscCheck(run.nominal_dt > 0.0, comm, PETSC_ERR_USER_INPUT, "-ts_dt %g: must be > 0",
              run.nominal_dt);
+  // Set up now what TSSolve would at its first step (the Jacobian matrix and its
+  // preallocation), so that -log_view counts it in the layout stage, not in the first step.
+  PetscCall(TSSetSolution(run.ts, X));
+  PetscCall(TSSetUp(run.ts));
+  PetscCall(SNESSetUp(snes));
 
   {
     // Force scale for the convergence test: the residual of the zero state at t = 0, where
@@ -616,11 +640,13 @@ PetscErrorCode runSimulation(MPI_Comm comm)
     PetscCall(DMRestoreLocalVector(run.dm, &f));
     PetscCall(DMRestoreLocalVector(run.dm, &zero));
   }
+  PetscCall(beginLogEvent(run.events.output));
   PetscCall(openTimeSeries(run));
   if (run.scene.output_every > 0) {
     PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields"));
     PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir));
   }
+  PetscCall(endLogEvent(run.events.output));
   {
     // Row 0: the initial state.
     Vec rate;
@@ -632,7 +658,10 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   run.step_start = MPI_Wtime();
   const double t0 = MPI_Wtime();
   PetscCall(TSSetErrorIfStepFails(run.ts, PETSC_FALSE));
+  PetscCall(endLogPhase(run.events.layout));
+  PetscCall(beginLogPhase(run.events.time_stepping));
   PetscCall(TSSolve(run.ts, X));
+  PetscCall(endLogPhase(run.events.time_stepping));
   TSConvergedReason reason;
   PetscCall(TSGetConvergedReason(run.ts, &reason));
   if (reason < 0) {
@@ -652,9 +681,11 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   }
   PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
                         MPI_Wtime() - t0, run.scene.output_dir.c_str()));
+  PetscCall(beginLogEvent(run.events.output));
   if (run.csv) std::fclose(run.csv);
   PetscCall(run.fields.close());
   PetscCall(run.interface_fields.close());
+  PetscCall(endLogEvent(run.events.output));
   PetscCall(VecDestroy(&X));
   PetscCall(VecDestroy(&run.previous));
   PetscCall(VecDestroy(&run.initial));
