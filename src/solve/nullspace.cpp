@@ -1,6 +1,7 @@
 #include "poroseam/nullspace.hpp"
 
 #include "poroseam/layout.hpp"
+#include "poroseam/vertex_blocks.hpp"
 
 #include <petscdmplex.h>
 #include <unordered_set>
@@ -134,7 +135,7 @@ PetscErrorCode nameInnerSplits(KSP ksp, Vec, Vec, void *ctx)
 
 } // namespace
 
-PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
+PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobian_diagonal)
 {
   SNES snes;
   KSP ksp;
@@ -152,6 +153,9 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene)
   PetscCall(DMCreateFieldIS(dm, &numFields, &names, &fields));
   MatNullSpace modes;
   PetscCall(rigidBodyModes(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], &modes));
+  PetscCall(DMCreateGlobalVector(dm, jacobian_diagonal));
+  PetscCall(attachVertexBlocks(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], modes,
+                               ksp, *jacobian_diagonal));
   PetscCall(PetscObjectCompose((PetscObject)fields[kDisplacementField], "nearnullspace",
                                (PetscObject)modes));
   PetscCall(MatNullSpaceDestroy(&modes));

@@ -10,6 +10,7 @@
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
+#include "poroseam/vertex_blocks.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -51,6 +52,7 @@ struct Run {
   double stage_time = 0.0;       ///< time of the step being solved
   double reference_rtol = 1e-9;  ///< -snes_reference_rtol
   double ksp_rtol = 0.0;         ///< -ksp_rtol: the linear tolerance of a step's first solve
+  Vec jacobian_diagonal = nullptr; ///< with a fieldsplit: diag of the Jacobian (vertex_blocks)
   /// Profiling: -log_view events and phases of this run, and whether the first Jacobian
   /// (PsFirstJacobian) is behind us.
   LogEvents events;
@@ -105,6 +107,7 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   if (first) PetscCall(beginLogEvent(run.events.first_jacobian));
   PetscCall(
       run.problem.jacobian(t, shift, local, local_rate, -dt * run.problem.massBalanceScale(), P));
+  if (run.jacobian_diagonal) PetscCall(MatGetDiagonal(P, run.jacobian_diagonal));
   if (first) PetscCall(endLogEvent(run.events.first_jacobian));
   run.jacobian_assembled = true;
   if (J != P) {
@@ -349,6 +352,39 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
     const double rtol = std::max(run.ksp_rtol, std::min(0.1, 0.01 * target / fnorm));
     PetscCall(KSPSetTolerances(ksp, rtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   }
+  PetscFunctionReturn(0);
+}
+
+/// Safeguard of the extrapolated start (-ts_theta_initial_guess_extrapolate): Newton starts
+/// from the extrapolation only when its residual is smaller than that of the last accepted
+/// state. Where the loading reverses, the extrapolation points the wrong way: measured on 50
+/// shear reversals of soft blocks (nodal), it raised the worst step from 4 to 9 Newton
+/// iterations; with this choice the reversals cost what they did before. Two residual
+/// evaluations per step.
+PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx)
+{
+  Run &run = *static_cast<Run *>(ctx);
+  Vec last, F;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(run.dm, &last));
+  PetscCall(DMGetGlobalVector(run.dm, &F));
+  PetscCall(DMLocalToGlobal(run.dm, run.previous, INSERT_VALUES, last));
+  PetscReal distance;
+  PetscCall(VecAXPY(last, -1.0, X));
+  PetscCall(VecNorm(last, NORM_INFINITY, &distance));
+  PetscCall(VecAXPY(last, 1.0, X));
+  if (distance > 0.0) {
+    PetscReal extrapolated, unchanged;
+    PetscCall(SNESComputeFunction(snes, X, F));
+    PetscCall(VecNorm(F, NORM_2, &extrapolated));
+    PetscCall(SNESComputeFunction(snes, last, F));
+    PetscCall(VecNorm(F, NORM_2, &unchanged));
+    PetscCall(PetscInfo(snes, "poroseam: residual of the extrapolated start %g, of the last state %g\n",
+                        (double)extrapolated, (double)unchanged));
+    if (!(extrapolated < unchanged)) PetscCall(VecCopy(last, X));
+  }
+  PetscCall(DMRestoreGlobalVector(run.dm, &F));
+  PetscCall(DMRestoreGlobalVector(run.dm, &last));
   PetscFunctionReturn(0);
 }
 
@@ -598,10 +634,21 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(
       PetscOptionsGetReal(nullptr, nullptr, "-snes_reference_rtol", &run.reference_rtol, nullptr));
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
+  PetscCall(SNESSetComputeInitialGuess(snes, chooseInitialGuess, &run));
   PetscCall(
       SNESSetTolerances(snes, PETSC_DEFAULT, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(registerVertexBlocksPC());
+  {
+    // Newton starts from the linear extrapolation of the last two accepted states (PETSc's
+    // theta-method predictor; after a cut-back it starts from the last state). Measured on the
+    // coarse 3D quarter caisson (24 steps, MUMPS): 102 -> 47 Newton iterations, the same time
+    // series to 2e-9. A user's -ts_theta_initial_guess_extrapolate false still wins.
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-ts_theta_initial_guess_extrapolate", &set));
+    if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-ts_theta_initial_guess_extrapolate", "true"));
+  }
   PetscCall(TSSetFromOptions(run.ts));
-  PetscCall(configureFieldSplit(run.ts, run.dm, run.scene));
+  PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
   {
     KSP ksp;
     PetscReal rtol;
@@ -688,6 +735,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(endLogEvent(run.events.output));
   PetscCall(VecDestroy(&X));
   PetscCall(VecDestroy(&run.previous));
+  PetscCall(VecDestroy(&run.jacobian_diagonal));
   PetscCall(VecDestroy(&run.initial));
   PetscCall(TSDestroy(&run.ts));
   PetscCall(DMDestroy(&run.dm));

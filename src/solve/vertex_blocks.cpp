@@ -1,0 +1,498 @@
+#include "poroseam/vertex_blocks.hpp"
+
+#include "poroseam/layout.hpp"
+
+#include <algorithm>
+#include <petsc/private/pcimpl.h> // a new PC type sets pc->ops (PETSc's documented way)
+#include <petscdmplex.h>
+#include <string>
+#include <vector>
+
+namespace poroseam {
+namespace {
+
+constexpr const char *kMapName = "poroseam vertex blocks";
+
+/// Where the free displacement components of this rank go in the whole-vertex numbering
+/// ("extended": dim rows per owned vertex, numbered vertex by vertex, ranks in order).
+struct VertexBlockMap {
+  int dim = 0;
+  PetscInt free_start = 0;           ///< first row of this rank in the displacement block
+  std::vector<PetscInt> ext_of_free; ///< per local free component: its extended row
+  PetscInt ext_local = 0;            ///< extended rows on this rank (dim x owned vertices)
+  std::vector<Vec> ext_modes;        ///< rigid-body modes in the extended numbering
+  Vec ext_of_free_global = nullptr;  ///< ext_of_free as a vector of the displacement block
+  /// -ksp_diagonal_scale: the outer solver (borrowed) may hand the PC D^-1/2 A D^-1/2 with
+  /// D = diag(A); the near null space of that operator is D^1/2 times the rigid-body modes.
+  /// Measured on the coarse 3D caisson: unscaled modes on the scaled operator took GAMG 71
+  /// iterations per displacement solve instead of 26.
+  KSP outer = nullptr;
+  Vec jacobian_diagonal = nullptr; ///< diag of the whole Jacobian, filled at each assembly
+  IS displacement = nullptr;       ///< the displacement split in the whole system
+};
+
+PetscErrorCode destroyMap(void *ctx)
+{
+  auto *map = static_cast<VertexBlockMap *>(ctx);
+  PetscFunctionBeginUser;
+  for (auto &v : map->ext_modes)
+    PetscCall(VecDestroy(&v));
+  PetscCall(VecDestroy(&map->ext_of_free_global));
+  PetscCall(VecDestroy(&map->jacobian_diagonal));
+  PetscCall(ISDestroy(&map->displacement));
+  delete map;
+  PetscFunctionReturn(0);
+}
+
+/// Axisymmetric: the two translations only (a radial displacement strains the hoop; the
+/// translations are still the smooth low-energy modes AMG needs). Otherwise PETSc's rigid-body
+/// modes from the coordinates.
+PetscErrorCode extendedModes(int dim, bool axisymmetric, Vec coords, std::vector<Vec> &modes)
+{
+  PetscFunctionBeginUser;
+  if (!axisymmetric) {
+    MatNullSpace rigid;
+    PetscInt n;
+    const Vec *vecs;
+    PetscCall(MatNullSpaceCreateRigidBody(coords, &rigid));
+    PetscCall(MatNullSpaceGetVecs(rigid, nullptr, &n, &vecs));
+    modes.resize(n);
+    for (PetscInt m = 0; m < n; ++m) {
+      PetscCall(VecDuplicate(vecs[m], &modes[m]));
+      PetscCall(VecCopy(vecs[m], modes[m]));
+    }
+    PetscCall(MatNullSpaceDestroy(&rigid));
+    PetscFunctionReturn(0);
+  }
+  Vec t[2];
+  for (int m = 0; m < 2; ++m) {
+    PetscInt n;
+    PetscScalar *a;
+    PetscCall(VecDuplicate(coords, &t[m]));
+    PetscCall(VecGetLocalSize(t[m], &n));
+    PetscCall(VecGetArray(t[m], &a));
+    for (PetscInt i = 0; i < n; ++i)
+      a[i] = (i % dim == m) ? 1.0 : 0.0;
+    PetscCall(VecRestoreArray(t[m], &a));
+    PetscCall(VecNormalize(t[m], nullptr));
+  }
+  modes.assign(t, t + 2);
+  PetscFunctionReturn(0);
+}
+
+/// State of one vertex_blocks preconditioner.
+struct VertexBlocksPC {
+  const VertexBlockMap *map = nullptr;
+  Mat ext = nullptr;  ///< the displacement block with whole vertex blocks
+  PC inner = nullptr; ///< applied to ext
+  Vec ext_rhs = nullptr, ext_sol = nullptr;
+  std::vector<PetscInt> off_rows; ///< off-rank columns of the block (sorted) ...
+  std::vector<PetscInt> off_ext;  ///< ... and their extended rows
+};
+
+PetscErrorCode findMap(Mat P, const VertexBlockMap **map)
+{
+  MatNullSpace modes;
+  PetscContainer container = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(MatGetNearNullSpace(P, &modes));
+  if (modes) PetscCall(PetscObjectQuery((PetscObject)modes, kMapName, (PetscObject *)&container));
+  PetscCheck(container, PetscObjectComm((PetscObject)P), PETSC_ERR_USER_INPUT,
+             "-pc_type vertex_blocks works only on poroseam's displacement split "
+             "(-fieldsplit_displacement_pc_type vertex_blocks with -pc_type fieldsplit)");
+  void *ptr;
+  PetscCall(PetscContainerGetPointer(container, &ptr));
+  *map = static_cast<const VertexBlockMap *>(ptr);
+  PetscFunctionReturn(0);
+}
+
+/// Off-rank columns of P and their extended rows, gathered once: the pattern of the Jacobian
+/// is fixed by the DM.
+PetscErrorCode mapOffRankColumns(Mat P, VertexBlocksPC &vb)
+{
+  PetscInt rstart, rend;
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(P, &rstart, &rend));
+  std::vector<PetscInt> off;
+  for (PetscInt r = rstart; r < rend; ++r) {
+    PetscInt ncols;
+    const PetscInt *cols;
+    PetscCall(MatGetRow(P, r, &ncols, &cols, nullptr));
+    for (PetscInt k = 0; k < ncols; ++k)
+      if (cols[k] < rstart || cols[k] >= rend) off.push_back(cols[k]);
+    PetscCall(MatRestoreRow(P, r, &ncols, &cols, nullptr));
+  }
+  std::sort(off.begin(), off.end());
+  off.erase(std::unique(off.begin(), off.end()), off.end());
+  IS from;
+  Vec gathered;
+  VecScatter scatter;
+  PetscCall(
+      ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)off.size(), off.data(), PETSC_USE_POINTER, &from));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, (PetscInt)off.size(), &gathered));
+  PetscCall(VecScatterCreate(vb.map->ext_of_free_global, from, gathered, nullptr, &scatter));
+  PetscCall(VecScatterBegin(scatter, vb.map->ext_of_free_global, gathered, INSERT_VALUES,
+                            SCATTER_FORWARD));
+  PetscCall(
+      VecScatterEnd(scatter, vb.map->ext_of_free_global, gathered, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar *values;
+  PetscCall(VecGetArrayRead(gathered, &values));
+  vb.off_ext.resize(off.size());
+  for (size_t k = 0; k < off.size(); ++k)
+    vb.off_ext[k] = (PetscInt)PetscRealPart(values[k]);
+  PetscCall(VecRestoreArrayRead(gathered, &values));
+  PetscCall(VecScatterDestroy(&scatter));
+  PetscCall(VecDestroy(&gathered));
+  PetscCall(ISDestroy(&from));
+  vb.off_rows = std::move(off);
+  PetscFunctionReturn(0);
+}
+
+/// Copies P into the extended matrix (creating and preallocating it the first time) and puts
+/// the vertex's largest free diagonal on each constrained component's row.
+PetscErrorCode fillExtended(Mat P, VertexBlocksPC &vb)
+{
+  const VertexBlockMap &map = *vb.map;
+  MPI_Comm comm = PetscObjectComm((PetscObject)P);
+  PetscInt rstart, rend;
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(P, &rstart, &rend));
+  PetscInt ext_start = 0;
+  PetscCallMPI(MPI_Exscan(&map.ext_local, &ext_start, 1, MPIU_INT, MPI_SUM, comm));
+  const PetscInt ext_end = ext_start + map.ext_local;
+  auto extColumn = [&](PetscInt c, PetscInt *e) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (c >= rstart && c < rend) {
+      *e = map.ext_of_free[c - rstart];
+    } else {
+      auto it = std::lower_bound(vb.off_rows.begin(), vb.off_rows.end(), c);
+      PetscCheck(it != vb.off_rows.end() && *it == c, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "vertex_blocks: column %" PetscInt_FMT " outside the Jacobian's pattern", c);
+      *e = vb.off_ext[it - vb.off_rows.begin()];
+    }
+    PetscFunctionReturn(0);
+  };
+  if (!vb.ext) {
+    PetscCall(mapOffRankColumns(P, vb));
+    std::vector<PetscInt> d_nnz(map.ext_local, 1), o_nnz(map.ext_local, 0);
+    for (PetscInt r = rstart; r < rend; ++r) {
+      PetscInt ncols;
+      const PetscInt *cols;
+      PetscCall(MatGetRow(P, r, &ncols, &cols, nullptr));
+      const PetscInt row = map.ext_of_free[r - rstart] - ext_start;
+      d_nnz[row] = o_nnz[row] = 0;
+      for (PetscInt k = 0; k < ncols; ++k) {
+        PetscInt e = -1;
+        PetscCall(extColumn(cols[k], &e));
+        ++((e >= ext_start && e < ext_end) ? d_nnz[row] : o_nnz[row]);
+      }
+      PetscCall(MatRestoreRow(P, r, &ncols, &cols, nullptr));
+    }
+    PetscCall(MatCreate(comm, &vb.ext));
+    PetscCall(MatSetSizes(vb.ext, map.ext_local, map.ext_local, PETSC_DETERMINE, PETSC_DETERMINE));
+    PetscCall(MatSetType(vb.ext, MATAIJ));
+    PetscCall(MatSetBlockSize(vb.ext, map.dim));
+    PetscCall(MatSeqAIJSetPreallocation(vb.ext, 0, d_nnz.data()));
+    PetscCall(MatMPIAIJSetPreallocation(vb.ext, 0, d_nnz.data(), 0, o_nnz.data()));
+    PetscCall(MatSetOption(vb.ext, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+    PetscCall(MatCreateVecs(vb.ext, &vb.ext_sol, &vb.ext_rhs));
+  } else {
+    PetscCall(MatZeroEntries(vb.ext));
+  }
+  // Diagonal per extended row; constrained rows keep 0 until filled below.
+  std::vector<PetscScalar> diag(map.ext_local, 0.0);
+  std::vector<PetscInt> ext_cols;
+  for (PetscInt r = rstart; r < rend; ++r) {
+    PetscInt ncols;
+    const PetscInt *cols;
+    const PetscScalar *vals;
+    PetscCall(MatGetRow(P, r, &ncols, &cols, &vals));
+    const PetscInt row = map.ext_of_free[r - rstart];
+    ext_cols.resize(ncols);
+    for (PetscInt k = 0; k < ncols; ++k) {
+      PetscCall(extColumn(cols[k], &ext_cols[k]));
+      if (cols[k] == r) diag[row - ext_start] = vals[k];
+    }
+    PetscCall(MatSetValues(vb.ext, 1, &row, ncols, ext_cols.data(), vals, INSERT_VALUES));
+    PetscCall(MatRestoreRow(P, r, &ncols, &cols, &vals));
+  }
+  const int dim = map.dim;
+  for (PetscInt v = 0; v < map.ext_local / dim; ++v) {
+    PetscReal largest = 0.0;
+    for (int c = 0; c < dim; ++c)
+      largest = std::max(largest, PetscAbsScalar(diag[v * dim + c]));
+    if (largest == 0.0) largest = 1.0; // a fully constrained vertex: decoupled identity
+    for (int c = 0; c < dim; ++c) {
+      if (diag[v * dim + c] != 0.0) continue;
+      const PetscInt row = ext_start + v * dim + c;
+      const PetscScalar value = largest;
+      PetscCall(MatSetValues(vb.ext, 1, &row, 1, &row, &value, INSERT_VALUES));
+    }
+  }
+  PetscCall(MatAssemblyBegin(vb.ext, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(vb.ext, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/// The near null space of the operator the PC is given: the rigid-body modes, times D^1/2
+/// when the outer solver scales the system by D^-1/2 (constrained rows: the vertex's largest).
+PetscErrorCode attachModes(VertexBlocksPC &vb)
+{
+  const VertexBlockMap &map = *vb.map;
+  PetscBool scaled = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  if (map.outer) PetscCall(KSPGetDiagonalScale(map.outer, &scaled));
+  std::vector<Vec> modes(map.ext_modes.size());
+  for (size_t m = 0; m < modes.size(); ++m) {
+    PetscCall(VecDuplicate(map.ext_modes[m], &modes[m]));
+    PetscCall(VecCopy(map.ext_modes[m], modes[m]));
+  }
+  if (scaled) {
+    Vec weight, diag;
+    PetscCall(VecDuplicate(vb.ext_rhs, &weight));
+    PetscCall(VecSet(weight, 0.0));
+    PetscCall(VecGetSubVector(map.jacobian_diagonal, map.displacement, &diag));
+    PetscInt ext_start;
+    PetscCall(VecGetOwnershipRange(weight, &ext_start, nullptr));
+    const PetscScalar *d;
+    PetscScalar *w;
+    PetscCall(VecGetArrayRead(diag, &d));
+    PetscCall(VecGetArray(weight, &w));
+    for (size_t i = 0; i < map.ext_of_free.size(); ++i)
+      w[map.ext_of_free[i] - ext_start] = PetscSqrtReal(PetscAbsScalar(d[i]));
+    for (PetscInt v = 0; v < map.ext_local / map.dim; ++v) {
+      PetscReal largest = 0.0;
+      for (int c = 0; c < map.dim; ++c)
+        largest = std::max(largest, PetscRealPart(w[v * map.dim + c]));
+      for (int c = 0; c < map.dim; ++c)
+        if (w[v * map.dim + c] == 0.0) w[v * map.dim + c] = largest > 0.0 ? largest : 1.0;
+    }
+    PetscCall(VecRestoreArray(weight, &w));
+    PetscCall(VecRestoreArrayRead(diag, &d));
+    PetscCall(VecRestoreSubVector(map.jacobian_diagonal, map.displacement, &diag));
+    for (auto &v : modes)
+      PetscCall(VecPointwiseMult(v, v, weight));
+    PetscCall(VecDestroy(&weight));
+  }
+  // Orthonormal, as MatNullSpaceCreate expects (modified Gram-Schmidt).
+  for (size_t m = 0; m < modes.size(); ++m) {
+    for (size_t k = 0; k < m; ++k) {
+      PetscScalar dot;
+      PetscCall(VecDot(modes[m], modes[k], &dot));
+      PetscCall(VecAXPY(modes[m], -dot, modes[k]));
+    }
+    PetscCall(VecNormalize(modes[m], nullptr));
+  }
+  MatNullSpace space;
+  PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)vb.ext), PETSC_FALSE,
+                               (PetscInt)modes.size(), modes.data(), &space));
+  PetscCall(MatSetNearNullSpace(vb.ext, space));
+  PetscCall(MatNullSpaceDestroy(&space));
+  for (auto &v : modes)
+    PetscCall(VecDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode setUp(PC pc)
+{
+  auto *vb = static_cast<VertexBlocksPC *>(pc->data);
+  Mat P;
+  PetscFunctionBeginUser;
+  PetscCall(PCGetOperators(pc, nullptr, &P));
+  if (!vb->map) PetscCall(findMap(P, &vb->map));
+  PetscCall(fillExtended(P, *vb));
+  PetscCall(attachModes(*vb));
+  if (!vb->inner) {
+    const char *prefix;
+    PetscCall(PCCreate(PetscObjectComm((PetscObject)pc), &vb->inner));
+    PetscCall(PCGetOptionsPrefix(pc, &prefix));
+    PetscCall(PCSetOptionsPrefix(vb->inner, prefix));
+    PetscCall(PCAppendOptionsPrefix(vb->inner, "vertex_blocks_"));
+    PetscCall(PCSetType(vb->inner, PCGAMG));
+    PetscCall(PCSetFromOptions(vb->inner));
+  }
+  PetscCall(PCSetOperators(vb->inner, vb->ext, vb->ext));
+  PetscCall(PCSetUp(vb->inner));
+  PetscFunctionReturn(0);
+}
+
+/// y = R M^-1 R^T x: the free components into the extended vector (zero on constrained
+/// components), the inner preconditioner, and back.
+PetscErrorCode apply(PC pc, Vec x, Vec y)
+{
+  auto *vb = static_cast<VertexBlocksPC *>(pc->data);
+  const VertexBlockMap &map = *vb->map;
+  PetscFunctionBeginUser;
+  PetscInt ext_start;
+  PetscCall(VecGetOwnershipRange(vb->ext_rhs, &ext_start, nullptr));
+  const PetscScalar *in;
+  PetscScalar *ext;
+  PetscCall(VecSet(vb->ext_rhs, 0.0));
+  PetscCall(VecGetArrayRead(x, &in));
+  PetscCall(VecGetArray(vb->ext_rhs, &ext));
+  for (size_t i = 0; i < map.ext_of_free.size(); ++i)
+    ext[map.ext_of_free[i] - ext_start] = in[i];
+  PetscCall(VecRestoreArray(vb->ext_rhs, &ext));
+  PetscCall(VecRestoreArrayRead(x, &in));
+  PetscCall(PCApply(vb->inner, vb->ext_rhs, vb->ext_sol));
+  const PetscScalar *sol;
+  PetscScalar *out;
+  PetscCall(VecGetArrayRead(vb->ext_sol, &sol));
+  PetscCall(VecGetArray(y, &out));
+  for (size_t i = 0; i < map.ext_of_free.size(); ++i)
+    out[i] = sol[map.ext_of_free[i] - ext_start];
+  PetscCall(VecRestoreArray(y, &out));
+  PetscCall(VecRestoreArrayRead(vb->ext_sol, &sol));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode reset(PC pc)
+{
+  auto *vb = static_cast<VertexBlocksPC *>(pc->data);
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&vb->ext));
+  PetscCall(VecDestroy(&vb->ext_rhs));
+  PetscCall(VecDestroy(&vb->ext_sol));
+  PetscCall(PCDestroy(&vb->inner));
+  vb->map = nullptr;
+  vb->off_rows.clear();
+  vb->off_ext.clear();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode destroy(PC pc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(reset(pc));
+  delete static_cast<VertexBlocksPC *>(pc->data);
+  pc->data = nullptr;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode view(PC pc, PetscViewer viewer)
+{
+  auto *vb = static_cast<VertexBlocksPC *>(pc->data);
+  PetscBool ascii;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
+  if (ascii && vb->inner) {
+    PetscCall(PetscViewerASCIIPrintf(
+        viewer, "  constrained components restored as decoupled rows; inner preconditioner:\n"));
+    PetscCall(PetscViewerASCIIPushTab(viewer));
+    PetscCall(PCView(vb->inner, viewer));
+    PetscCall(PetscViewerASCIIPopTab(viewer));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode create(PC pc)
+{
+  PetscFunctionBeginUser;
+  pc->data = new VertexBlocksPC;
+  pc->ops->setup = setUp;
+  pc->ops->apply = apply;
+  pc->ops->reset = reset;
+  pc->ops->destroy = destroy;
+  pc->ops->view = view;
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode registerVertexBlocksPC()
+{
+  PetscFunctionBeginUser;
+  PetscCall(PCRegister("vertex_blocks", create));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displacement,
+                                  MatNullSpace modes, KSP outer, Vec jacobian_diagonal)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscSection local, global, csec;
+  Vec coords;
+  PetscInt vStart, vEnd;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(dm, &local));
+  PetscCall(DMGetGlobalSection(dm, &global));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  auto *map = new VertexBlockMap;
+  map->dim = dim;
+  map->outer = outer;
+  PetscCall(PetscObjectReference((PetscObject)jacobian_diagonal));
+  map->jacobian_diagonal = jacobian_diagonal;
+  PetscCall(PetscObjectReference((PetscObject)displacement));
+  map->displacement = displacement;
+  PetscInt nfree;
+  const PetscInt *free_global;
+  PetscCall(ISGetLocalSize(displacement, &nfree));
+  PetscCall(ISGetIndices(displacement, &free_global));
+  PetscCallMPI(MPI_Exscan(&nfree, &map->free_start, 1, MPIU_INT, MPI_SUM, comm));
+  map->ext_of_free.assign(nfree, -1);
+  // Owned vertices, in point order: dim extended rows each.
+  std::vector<PetscInt> owned;
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt gdof;
+    PetscCall(PetscSectionGetDof(global, v, &gdof));
+    if (gdof >= 0) owned.push_back(v);
+  }
+  map->ext_local = dim * (PetscInt)owned.size();
+  PetscInt ext_start = 0;
+  PetscCallMPI(MPI_Exscan(&map->ext_local, &ext_start, 1, MPIU_INT, MPI_SUM, comm));
+  Vec ext_coords;
+  PetscCall(VecCreateMPI(comm, map->ext_local, PETSC_DETERMINE, &ext_coords));
+  PetscCall(VecSetBlockSize(ext_coords, dim));
+  PetscScalar *xc;
+  const PetscScalar *x;
+  PetscCall(VecGetArray(ext_coords, &xc));
+  PetscCall(VecGetArrayRead(coords, &x));
+  for (size_t k = 0; k < owned.size(); ++k) {
+    const PetscInt v = owned[k];
+    PetscInt goff, coff, ncon;
+    const PetscInt *con = nullptr;
+    PetscCall(PetscSectionGetOffset(global, v, &goff));
+    PetscCall(PetscSectionGetOffset(csec, v, &coff));
+    for (int d = 0; d < dim; ++d)
+      xc[k * dim + d] = x[coff + d];
+    // The free components are the point's first global dofs (field 0 comes first), in
+    // component order, constrained ones left out.
+    PetscCall(PetscSectionGetFieldConstraintDof(local, v, kDisplacementField, &ncon));
+    if (ncon) PetscCall(PetscSectionGetFieldConstraintIndices(local, v, kDisplacementField, &con));
+    PetscInt next = goff;
+    for (int c = 0; c < dim; ++c) {
+      if (std::find(con, con + ncon, c) != con + ncon) continue;
+      const PetscInt *at = std::lower_bound(free_global, free_global + nfree, next);
+      PetscCheck(at != free_global + nfree && *at == next, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "vertex_blocks: displacement dof %" PetscInt_FMT " not in the split", next);
+      map->ext_of_free[at - free_global] = ext_start + (PetscInt)k * dim + c;
+      ++next;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(coords, &x));
+  PetscCall(VecRestoreArray(ext_coords, &xc));
+  PetscCall(ISRestoreIndices(displacement, &free_global));
+  for (PetscInt e : map->ext_of_free)
+    PetscCheck(e >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "vertex_blocks: a displacement dof that belongs to no owned vertex");
+  PetscCall(extendedModes(dim, axisymmetric, ext_coords, map->ext_modes));
+  PetscCall(VecDestroy(&ext_coords));
+  // The same map as a vector of the displacement block, to look up off-rank columns.
+  PetscCall(VecCreateMPI(comm, nfree, PETSC_DETERMINE, &map->ext_of_free_global));
+  PetscScalar *e;
+  PetscCall(VecGetArray(map->ext_of_free_global, &e));
+  for (PetscInt i = 0; i < nfree; ++i)
+    e[i] = (PetscScalar)map->ext_of_free[i];
+  PetscCall(VecRestoreArray(map->ext_of_free_global, &e));
+  PetscContainer container;
+  PetscCall(PetscContainerCreate(comm, &container));
+  PetscCall(PetscContainerSetPointer(container, map));
+  PetscCall(PetscContainerSetUserDestroy(container, destroyMap));
+  PetscCall(PetscObjectCompose((PetscObject)modes, kMapName, (PetscObject)container));
+  PetscCall(PetscContainerDestroy(&container));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam
