@@ -10,6 +10,7 @@
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
+#include "poroseam/solver_preset.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
 #include <cmath>
@@ -519,7 +520,7 @@ PetscErrorCode postStep(TS ts)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode printFieldSizes(Run &run)
+PetscErrorCode printFieldSizes(Run &run, long *unknowns)
 {
   PetscSection gs;
   PetscInt pStart, pEnd, numFields;
@@ -546,6 +547,9 @@ PetscErrorCode printFieldSizes(Run &run)
     PetscCall(PetscSectionGetFieldName(s, f, &name));
     PetscCall(PetscPrintf(comm, "field %-14s %10ld unknowns\n", name, total[f]));
   }
+  *unknowns = 0;
+  for (long n : total)
+    *unknowns += n;
   PetscFunctionReturn(0);
 }
 
@@ -597,7 +601,9 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(run.problem.setup(run.dm, run.scene));
   PetscCall(run.probes.setup(run.dm, run.scene));
   PetscCall(collectBoundaryDofs(run));
-  PetscCall(printFieldSizes(run));
+  long unknowns = 0;
+  PetscCall(printFieldSizes(run, &unknowns));
+  PetscCall(applySolverPreset(comm, run.scene.dim, unknowns));
   PetscCall(
       PetscOptionsGetReal(nullptr, nullptr, "-test_fail_dt_above", &run.fail_dt_above, nullptr));
 

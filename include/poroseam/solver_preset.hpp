@@ -1,0 +1,24 @@
+// Choosing the linear solver: the presets of options/solvers/ by name, or by problem size.
+//
+//   -solver_preset direct|fieldsplit|<name>   insert options/solvers/<name>.opts
+//   -solver_preset auto                       MUMPS LU (direct) unless the scene is 3D with more
+//                                             than -solver_auto_threshold unknowns (default
+//                                             30000), then the iterative fieldsplit preset;
+//                                             nothing when -pc_type is given (a preset file
+//                                             added with -options_file, say)
+// Options already set (scene file or command line) keep their values: a preset only fills in
+// what is not set. Measured with scripts/bench on the 3D quarter caisson (2 ranks): at 5k
+// unknowns MUMPS is faster, at 37k the fieldsplit preset takes about 0.8 of MUMPS's time per
+// step, at 160k about 0.6, and MUMPS's memory grows like N^1.5.
+#pragma once
+
+#include <petscsys.h>
+
+namespace poroseam {
+
+/// Reads -solver_preset; with a preset, inserts its options (those not set already) and says
+/// which on stdout. `dim` and `unknowns` (global) decide for auto. Call before the solvers
+/// read their options.
+PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns);
+
+} // namespace poroseam

@@ -1,0 +1,107 @@
+#include "poroseam/solver_preset.hpp"
+
+#include <cctype>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+
+#ifndef POROSEAM_SOLVER_DIR
+#error "POROSEAM_SOLVER_DIR (the folder of the solver presets) must be defined by the build"
+#endif
+
+namespace poroseam {
+namespace {
+
+bool validName(const std::string &name)
+{
+  if (name.empty()) return false;
+  for (char c : name)
+    if (!(std::isalnum((unsigned char)c) || c == '_' || c == '-')) return false;
+  return true;
+}
+
+/// Copies the options of `file` into the global database, except those already set there.
+PetscErrorCode insertUnset(MPI_Comm comm, const std::string &file)
+{
+  PetscOptions preset;
+  char *all;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsCreate(&preset));
+  PetscCall(PetscOptionsInsertFile(comm, preset, file.c_str(), PETSC_TRUE));
+  PetscCall(PetscOptionsGetAll(preset, &all));
+  // "-name value -flag -name2 value2 ...": a token that starts with '-' followed by a letter
+  // is a name, anything else the value of the name before it (presets hold no negative
+  // numbers as separate values with letters, e.g. 1e-8 starts with a digit).
+  std::istringstream tokens(all);
+  std::string token, name, value;
+  auto flush = [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (!name.empty()) {
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &set));
+      if (!set)
+        PetscCall(
+            PetscOptionsSetValue(nullptr, name.c_str(), value.empty() ? nullptr : value.c_str()));
+    }
+    name.clear();
+    value.clear();
+    PetscFunctionReturn(0);
+  };
+  while (tokens >> token) {
+    if (token.size() > 1 && token[0] == '-' && std::isalpha((unsigned char)token[1])) {
+      PetscCall(flush());
+      name = token;
+    } else {
+      value = value.empty() ? token : value + " " + token;
+    }
+  }
+  PetscCall(flush());
+  PetscCall(PetscFree(all));
+  PetscCall(PetscOptionsDestroy(&preset));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns)
+{
+  char buffer[256] = "";
+  PetscBool given;
+  PetscInt threshold = 30000;
+  PetscFunctionBeginUser;
+  PetscCall(
+      PetscOptionsGetString(nullptr, nullptr, "-solver_preset", buffer, sizeof buffer, &given));
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-solver_auto_threshold", &threshold, nullptr));
+  if (!given) PetscFunctionReturn(0);
+  std::string name = buffer, why;
+  if (name == "auto") {
+    char chosen[64] = "";
+    PetscBool pc_given;
+    PetscCall(
+        PetscOptionsGetString(nullptr, nullptr, "-pc_type", chosen, sizeof chosen, &pc_given));
+    if (pc_given) { // a solver chosen on the command line or by an options file wins
+      PetscCall(PetscPrintf(comm, "solver as given (-pc_type %s)\n", chosen));
+      PetscFunctionReturn(0);
+    }
+    const bool iterative = dim == 3 && unknowns > threshold;
+    name = iterative ? "fieldsplit" : "direct";
+    why = iterative ? " (auto: 3D, " + std::to_string(unknowns) + " unknowns > " +
+                          std::to_string((long)threshold) + ")"
+                    : " (auto: " + std::to_string(dim) + "D, " + std::to_string(unknowns) +
+                          " unknowns; iterative only for 3D above " +
+                          std::to_string((long)threshold) + ", -solver_auto_threshold)";
+  }
+  PetscCheck(validName(name), comm, PETSC_ERR_USER_INPUT,
+             "-solver_preset %s: expected auto or the name of a file in %s (letters, digits, _ "
+             "and -)",
+             buffer, POROSEAM_SOLVER_DIR);
+  const std::string file = std::string(POROSEAM_SOLVER_DIR) + "/" + name + ".opts";
+  struct stat info;
+  PetscCheck(stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode), comm, PETSC_ERR_USER_INPUT,
+             "-solver_preset %s: no preset file %s", name.c_str(), file.c_str());
+  PetscCall(insertUnset(comm, file));
+  PetscCall(PetscPrintf(comm, "solver preset %s%s\n", name.c_str(), why.c_str()));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam
