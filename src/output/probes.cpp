@@ -4,8 +4,10 @@
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace poroseam {
@@ -21,33 +23,61 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   Vec coords;
-  PetscSection csec;
+  PetscSection csec, s;
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(DMGetLocalSection(dm, &s));
   PetscInt cStart, cEnd;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  located_.assign(scene.probes.size(), Located());
-  std::string error;
-  for (size_t i = 0; i < scene.probes.size(); ++i) {
-    Located &loc = located_[i];
-    // On a region border, prefer a cell whose closure has pressure dofs (a porous cell):
-    // the pressure there is the porous side's.
-    PetscSection s;
-    PetscCall(DMGetLocalSection(dm, &s));
-    bool porous_found = false;
-    for (PetscInt c = cStart; c < cEnd && !porous_found; ++c) {
-      DMPolytopeType ct;
-      PetscCall(DMPlexGetCellType(dm, c, &ct));
-      if (DMPolytopeTypeGetDim(ct) != dim_ || isCohesive(ct)) continue;
-      ReferenceElement e;
-      PetscCall(ReferenceElement::create(ct, &e));
-      PetscScalar *x = nullptr;
-      PetscInt n = 0;
-      PetscCall(DMPlexVecGetClosure(dm, csec, coords, c, &n, &x));
+  const size_t np = scene.probes.size();
+  located_.assign(np, Located());
+  // One pass over the cells, testing every probe in each, instead of one pass per probe: the
+  // coordinates of a cell are read once. A probe is done once it has a porous cell.
+  std::vector<char> porous_found(np, 0);
+  size_t open = np;
+  // One reference element per cell type: building one (a PETSc reference cell DM) for every
+  // cell scanned made this the bulk of the set-up on large meshes.
+  std::map<DMPolytopeType, ReferenceElement> elements;
+  for (PetscInt c = cStart; c < cEnd && open > 0; ++c) {
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(dm, c, &ct));
+    if (DMPolytopeTypeGetDim(ct) != dim_ || isCohesive(ct)) continue;
+    auto it = elements.find(ct);
+    if (it == elements.end()) {
+      ReferenceElement created;
+      PetscCall(ReferenceElement::create(ct, &created));
+      it = elements.emplace(ct, created).first;
+    }
+    const ReferenceElement &e = it->second;
+    PetscScalar *x = nullptr;
+    PetscInt n = 0;
+    PetscCall(DMPlexVecGetClosure(dm, csec, coords, c, &n, &x));
+    // Bounding box of the vertices, padded: locatePoint accepts points up to its tolerance
+    // (1e-8 in reference coordinates, i.e. a few 1e-8 of the cell's extent) outside the cell,
+    // so a box padded by 1e-6 of the extent (plus round-off of the coordinates) never rejects
+    // a cell it would accept, and the cheap box test spares the inverse map in all others.
+    double lo[3], hi[3], pad = 0.0;
+    for (int k = 0; k < dim_; ++k) {
+      lo[k] = hi[k] = x[k];
+      for (int a = 1; a < e.num_vertices; ++a) {
+        lo[k] = std::min(lo[k], (double)x[a * dim_ + k]);
+        hi[k] = std::max(hi[k], (double)x[a * dim_ + k]);
+      }
+      pad = std::max(pad,
+                     1e-6 * (hi[k] - lo[k]) + 1e-12 * std::max(std::fabs(lo[k]), std::fabs(hi[k])));
+    }
+    for (size_t i = 0; i < np; ++i) {
+      if (porous_found[i]) continue;
+      const double *p = scene.probes[i].x.data();
+      bool in_box = true;
+      for (int k = 0; k < dim_ && in_box; ++k)
+        in_box = p[k] >= lo[k] - pad && p[k] <= hi[k] + pad;
+      if (!in_box) continue;
       double xi[3];
-      const bool inside = locatePoint(e, x, scene.probes[i].x.data(), xi);
-      PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
-      if (!inside) continue;
+      if (!locatePoint(e, x, p, xi)) continue;
+      Located &loc = located_[i];
+      // On a region border, prefer a cell whose closure has pressure dofs (a porous cell):
+      // the pressure there is the porous side's.
       PetscInt closure_dofs = 0, npts, *pts = nullptr;
       PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &npts, &pts));
       for (PetscInt k = 0; k < npts; ++k) {
@@ -62,11 +92,18 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
       loc.element = e;
       loc.phi.resize(e.num_vertices);
       e.evaluate(xi, loc.phi.data(), nullptr);
-      porous_found = porous;
+      if (porous) porous_found[i] = 1, --open;
     }
-    int mine = loc.cell >= 0 ? rank : size, owner = size;
-    PetscCallMPI(MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MIN, comm));
-    if (owner == size && error.empty()) {
+    PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
+  }
+  // The lowest rank that found a probe evaluates it.
+  std::vector<int> mine(np), owner(np);
+  for (size_t i = 0; i < np; ++i)
+    mine[i] = located_[i].cell >= 0 ? rank : size;
+  PetscCallMPI(MPI_Allreduce(mine.data(), owner.data(), (int)np, MPI_INT, MPI_MIN, comm));
+  std::string error;
+  for (size_t i = 0; i < np; ++i) {
+    if (owner[i] == size && error.empty()) {
       std::ostringstream msg;
       msg << "-probe_" << scene.probes[i].name << ": point (" << scene.probes[i].x[0] << ", "
           << scene.probes[i].x[1];
@@ -74,7 +111,7 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
       msg << ") is outside the mesh";
       error = msg.str();
     }
-    if (owner != rank) loc.cell = -1;
+    if (owner[i] != rank) located_[i].cell = -1;
   }
   PetscCall(checkOnAllRanks(comm, rank == 0 ? error : std::string()));
   PetscFunctionReturn(0);
