@@ -4,8 +4,12 @@
 
 #include "poroseam/scene.hpp"
 #include <petscts.h>
+#include <vector>
 
 namespace poroseam {
+
+/// Makes `vectors` orthonormal in place (modified Gram-Schmidt), as MatNullSpaceCreate expects.
+PetscErrorCode orthonormalize(std::vector<Vec> &vectors);
 
 /// If the PC of the TS's Newton solver is PCFIELDSPLIT, defines the splits "displacement"
 /// (with the rigid-body modes attached as its near null space) and "pressure" (the bulk and

@@ -65,15 +65,7 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement
   PetscCall(VecRestoreArrayRead(coords, &x));
   PetscCall(DMRestoreGlobalVector(dm, &global));
   PetscCall(DMRestoreLocalVector(dm, &local));
-  // Modified Gram-Schmidt.
-  for (int m = 0; m < count; ++m) {
-    for (int k = 0; k < m; ++k) {
-      PetscScalar dot;
-      PetscCall(VecDot(modes[m], modes[k], &dot));
-      PetscCall(VecAXPY(modes[m], -dot, modes[k]));
-    }
-    PetscCall(VecNormalize(modes[m], nullptr));
-  }
+    PetscCall(orthonormalize(modes));
   PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)dm), PETSC_FALSE, count, modes.data(),
                                space));
   for (auto &v : modes)
@@ -82,6 +74,20 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement
 }
 
 } // namespace
+
+PetscErrorCode orthonormalize(std::vector<Vec> &vectors)
+{
+  PetscFunctionBeginUser;
+  for (size_t m = 0; m < vectors.size(); ++m) { // modified Gram-Schmidt
+    for (size_t k = 0; k < m; ++k) {
+      PetscScalar dot;
+      PetscCall(VecDot(vectors[m], vectors[k], &dot));
+      PetscCall(VecAXPY(vectors[m], -dot, vectors[k]));
+    }
+    PetscCall(VecNormalize(vectors[m], nullptr));
+  }
+  PetscFunctionReturn(0);
+}
 
 namespace {
 

@@ -72,6 +72,9 @@ PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns)
   PetscCall(
       PetscOptionsGetString(nullptr, nullptr, "-solver_preset", buffer, sizeof buffer, &given));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-solver_auto_threshold", &threshold, nullptr));
+  PetscCheck(threshold >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-solver_auto_threshold %" PetscInt_FMT ": expected a number of unknowns >= 0",
+             threshold);
   if (!given) PetscFunctionReturn(0);
   std::string name = buffer, why;
   if (name == "auto") {

@@ -1,6 +1,7 @@
 #include "poroseam/vertex_blocks.hpp"
 
 #include "poroseam/layout.hpp"
+#include "poroseam/nullspace.hpp"
 
 #include <algorithm>
 #include <petsc/private/pcimpl.h> // a new PC type sets pc->ops (PETSc's documented way)
@@ -17,9 +18,9 @@ constexpr const char *kMapName = "poroseam vertex blocks";
 /// ("extended": dim rows per owned vertex, numbered vertex by vertex, ranks in order).
 struct VertexBlockMap {
   int dim = 0;
-  PetscInt free_start = 0;           ///< first row of this rank in the displacement block
   std::vector<PetscInt> ext_of_free; ///< per local free component: its extended row
   PetscInt ext_local = 0;            ///< extended rows on this rank (dim x owned vertices)
+  PetscInt ext_start = 0;            ///< first extended row of this rank
   std::vector<Vec> ext_modes;        ///< rigid-body modes in the extended numbering
   Vec ext_of_free_global = nullptr;  ///< ext_of_free as a vector of the displacement block
   /// -ksp_diagonal_scale: the outer solver (borrowed) may hand the PC D^-1/2 A D^-1/2 with
@@ -157,8 +158,7 @@ PetscErrorCode fillExtended(Mat P, VertexBlocksPC &vb)
   PetscInt rstart, rend;
   PetscFunctionBeginUser;
   PetscCall(MatGetOwnershipRange(P, &rstart, &rend));
-  PetscInt ext_start = 0;
-  PetscCallMPI(MPI_Exscan(&map.ext_local, &ext_start, 1, MPIU_INT, MPI_SUM, comm));
+  const PetscInt ext_start = map.ext_start;
   const PetscInt ext_end = ext_start + map.ext_local;
   auto extColumn = [&](PetscInt c, PetscInt *e) -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -252,8 +252,7 @@ PetscErrorCode attachModes(VertexBlocksPC &vb)
     PetscCall(VecDuplicate(vb.ext_rhs, &weight));
     PetscCall(VecSet(weight, 0.0));
     PetscCall(VecGetSubVector(map.jacobian_diagonal, map.displacement, &diag));
-    PetscInt ext_start;
-    PetscCall(VecGetOwnershipRange(weight, &ext_start, nullptr));
+    const PetscInt ext_start = map.ext_start;
     const PetscScalar *d;
     PetscScalar *w;
     PetscCall(VecGetArrayRead(diag, &d));
@@ -274,15 +273,7 @@ PetscErrorCode attachModes(VertexBlocksPC &vb)
       PetscCall(VecPointwiseMult(v, v, weight));
     PetscCall(VecDestroy(&weight));
   }
-  // Orthonormal, as MatNullSpaceCreate expects (modified Gram-Schmidt).
-  for (size_t m = 0; m < modes.size(); ++m) {
-    for (size_t k = 0; k < m; ++k) {
-      PetscScalar dot;
-      PetscCall(VecDot(modes[m], modes[k], &dot));
-      PetscCall(VecAXPY(modes[m], -dot, modes[k]));
-    }
-    PetscCall(VecNormalize(modes[m], nullptr));
-  }
+  PetscCall(orthonormalize(modes)); // as MatNullSpaceCreate expects
   MatNullSpace space;
   PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)vb.ext), PETSC_FALSE,
                                (PetscInt)modes.size(), modes.data(), &space));
@@ -323,8 +314,7 @@ PetscErrorCode apply(PC pc, Vec x, Vec y)
   auto *vb = static_cast<VertexBlocksPC *>(pc->data);
   const VertexBlockMap &map = *vb->map;
   PetscFunctionBeginUser;
-  PetscInt ext_start;
-  PetscCall(VecGetOwnershipRange(vb->ext_rhs, &ext_start, nullptr));
+  const PetscInt ext_start = map.ext_start;
   const PetscScalar *in;
   PetscScalar *ext;
   PetscCall(VecSet(vb->ext_rhs, 0.0));
@@ -430,7 +420,7 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
   const PetscInt *free_global;
   PetscCall(ISGetLocalSize(displacement, &nfree));
   PetscCall(ISGetIndices(displacement, &free_global));
-  PetscCallMPI(MPI_Exscan(&nfree, &map->free_start, 1, MPIU_INT, MPI_SUM, comm));
+
   map->ext_of_free.assign(nfree, -1);
   // Owned vertices, in point order: dim extended rows each.
   std::vector<PetscInt> owned;
@@ -440,8 +430,8 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
     if (gdof >= 0) owned.push_back(v);
   }
   map->ext_local = dim * (PetscInt)owned.size();
-  PetscInt ext_start = 0;
-  PetscCallMPI(MPI_Exscan(&map->ext_local, &ext_start, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Exscan(&map->ext_local, &map->ext_start, 1, MPIU_INT, MPI_SUM, comm));
+  const PetscInt ext_start = map->ext_start;
   Vec ext_coords;
   PetscCall(VecCreateMPI(comm, map->ext_local, PETSC_DETERMINE, &ext_coords));
   PetscCall(VecSetBlockSize(ext_coords, dim));
