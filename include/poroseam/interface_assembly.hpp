@@ -5,6 +5,7 @@
 // and the integration-point history that is committed only after a converged step.
 #pragma once
 
+#include "poroseam/closure_cache.hpp"
 #include "poroseam/contact.hpp"
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
@@ -95,6 +96,7 @@ private:
   int dim_ = 0;
   std::vector<ReferenceElement> elements_;
   std::vector<Cell> cells_;
+  ClosureCache closures_; ///< of cells_, same order
   std::vector<physics::ContactInitial> initial_;
   std::vector<physics::ContactHistory> committed_;
   InitialPressure initial_pressure_;

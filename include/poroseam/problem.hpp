@@ -3,6 +3,7 @@
 // values, and the initial (geostatic) state. Point laws come from physics/.
 #pragma once
 
+#include "poroseam/closure_cache.hpp"
 #include "poroseam/interface_assembly.hpp"
 #include "poroseam/log_events.hpp"
 #include "poroseam/reference_element.hpp"
@@ -100,6 +101,7 @@ private:
   std::vector<ReferenceElement> elements_;
   std::map<int, int> element_of_type_;
   std::vector<BulkCell> cells_;
+  ClosureCache closures_; ///< of cells_, same order
   std::vector<LoadedFace> faces_;
   std::vector<ConstrainedDof> constrained_;
   InterfaceAssembly interfaces_;

@@ -1,5 +1,6 @@
 #include "poroseam/interface_assembly.hpp"
 
+#include "poroseam/closure_cache.hpp"
 #include "poroseam/collective_check.hpp"
 #include "poroseam/interface_flow.hpp"
 #include "poroseam/interfaces.hpp"
@@ -86,6 +87,7 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
   cells_.clear();
   initial_.clear();
   committed_.clear();
+  closures_ = ClosureCache();
   if (scene.interfaces.empty()) PetscFunctionReturn(0);
   DMLabel iface, surface, side, normal;
   PetscCall(DMGetLabel(dm, kInterfaceLabel, &iface));
@@ -265,6 +267,10 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
     }
     cells_.push_back(cell);
   }
+  std::vector<PetscInt> points;
+  for (const Cell &cell : cells_)
+    points.push_back(cell.cell);
+  PetscCall(closures_.setup(dm, points));
   PetscFunctionReturn(0);
 }
 
@@ -319,32 +325,37 @@ template <class Kernel>
 PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
                                        Kernel &&kernel) const
 {
-  PetscSection s, csec;
   Vec coords;
+  const PetscScalar *ua, *ra = nullptr, *ca;
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(dm_, &s));
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  PetscCall(DMGetCoordinateSection(dm_, &csec));
-  std::vector<double> x1;
+  // Closures through the cache (closure_cache.hpp), read from the local arrays.
+  PetscCall(VecGetArrayRead(local, &ua));
+  if (rates.rate) PetscCall(VecGetArrayRead(rates.rate, &ra));
+  PetscCall(VecGetArrayRead(coords, &ca));
+  std::vector<double> x1, u_closure, udot_closure;
   const double g = scene_->gravity;
-  for (const Cell &cell : cells_) {
+  for (size_t i = 0; i < cells_.size(); ++i) {
+    const Cell &cell = cells_[i];
     const Interface &in = scene_->interfaces[cell.iface];
     const physics::ContactParameters params{in.normal_stiffness, in.tangential_stiffness,
                                             in.friction};
     const ReferenceElement &e = elements_[cell.element];
     const bool flow = cell.flow && rates.rate;
-    PetscScalar *u = nullptr, *udot = nullptr;
-    PetscInt n = 0, nd = 0;
-    PetscCall(DMPlexVecGetClosure(dm_, s, local, cell.cell, &n, &u));
-    if (flow) PetscCall(DMPlexVecGetClosure(dm_, s, rates.rate, cell.cell, &nd, &udot));
-    PetscScalar *xc = nullptr;
-    PetscInt nc = 0;
-    PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
+    const int n = closures_.closureSize(i);
+    u_closure.resize(n);
+    gatherClosure(ua, closures_.local(i), n, u_closure.data());
+    if (flow) {
+      udot_closure.resize(n);
+      gatherClosure(ra, closures_.local(i), n, udot_closure.data());
+    }
+    const double *u = u_closure.data(), *udot = udot_closure.data();
+    // Side-1 vertex coordinates: the coordinate closure lists vertices like the displacements.
+    const PetscInt *xc = closures_.coordinates(i);
     x1.resize(e.num_vertices * dim_);
     for (int a = 0; a < e.num_vertices; ++a)
       for (int d = 0; d < dim_; ++d)
-        x1[a * dim_ + d] = xc[cell.u1[a] + d];
-    PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell.cell, &nc, &xc));
+        x1[a * dim_ + d] = ca[xc[cell.u1[a] + d]];
     for (int q = 0; q < e.num_quadrature; ++q) {
       const double *phi = &e.basis[q * e.num_vertices];
       InterfacePointState st;
@@ -451,25 +462,30 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
           st.transversal_flux2 =
               physics::transversalFlux(in.transmissivity2, st.interface_pressure, p2);
       }
-      PetscCall(kernel(cell, q, phi, st, fp, T, (int)n));
+      PetscCall(kernel(cell, q, phi, st, fp, T, n));
     }
-    if (flow) PetscCall(DMPlexVecRestoreClosure(dm_, s, rates.rate, cell.cell, &nd, &udot));
-    PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &u));
   }
+  PetscCall(VecRestoreArrayRead(coords, &ca));
+  if (rates.rate) PetscCall(VecRestoreArrayRead(rates.rate, &ra));
+  PetscCall(VecRestoreArrayRead(local, &ua));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode InterfaceAssembly::residual(Vec local, const InterfaceRates &rates,
                                            double mass_scale, Vec f) const
 {
-  PetscSection s;
   std::vector<double> F;
+  PetscScalar *fa;
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(dm_, &s));
+  PetscCall(VecGetArray(f, &fa));
   const Cell *current = nullptr;
   auto flush = [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
-    if (current) PetscCall(DMPlexVecSetClosure(dm_, s, f, current->cell, F.data(), ADD_ALL_VALUES));
+    // DMPlexVecSetClosure(ADD_ALL_VALUES) through the closure cache.
+    if (current) {
+      const size_t i = current - cells_.data();
+      addClosure(F.data(), closures_.local(i), closures_.closureSize(i), fa);
+    }
     PetscFunctionReturn(0);
   };
   PetscCall(loop(local, rates,
@@ -505,22 +521,26 @@ PetscErrorCode InterfaceAssembly::residual(Vec local, const InterfaceRates &rate
                    PetscFunctionReturn(0);
                  }));
   PetscCall(flush());
+  PetscCall(VecRestoreArray(f, &fa));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rates, double shift,
                                            double mass_scale, Mat J) const
 {
-  PetscSection s, gs;
   std::vector<double> K;
+  std::vector<PetscInt> rows;
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(dm_, &s));
-  PetscCall(DMGetGlobalSection(dm_, &gs));
   const Cell *current = nullptr;
   int size = 0;
   auto flush = [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
-    if (current) PetscCall(DMPlexMatSetClosure(dm_, s, gs, J, current->cell, K.data(), ADD_VALUES));
+    // DMPlexMatSetClosure through the closure cache: the same indices, one MatSetValues.
+    if (current) {
+      rows.resize(size);
+      closures_.globalIndices(current - cells_.data(), rows.data());
+      PetscCall(MatSetValues(J, size, rows.data(), size, rows.data(), K.data(), ADD_VALUES));
+    }
     PetscFunctionReturn(0);
   };
   PetscCall(loop(local, rates,

@@ -1,6 +1,7 @@
 #include "poroseam/problem.hpp"
 
 #include "poroseam/biot.hpp"
+#include "poroseam/closure_cache.hpp"
 #include "poroseam/collective_check.hpp"
 #include "poroseam/elastic.hpp"
 #include "poroseam/interfaces.hpp"
@@ -145,6 +146,13 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     PetscCall(VecRestoreArrayRead(coords, &xa));
   }
   PetscCall(checkOnAllRanks(comm, error));
+  {
+    std::vector<PetscInt> points;
+    points.reserve(cells_.size());
+    for (const auto &cell : cells_)
+      points.push_back(cell.cell);
+    PetscCall(closures_.setup(dm, points));
+  }
   {
     double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
     // Porous regions set the scale; with none (interface flow between solid bodies), all do.
@@ -485,29 +493,41 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
   PetscCall(DMGetCoordinateSection(dm_, &csec));
   const bool pressure = scene_->hasPressure();
-  std::vector<double> F;
-  for (const auto &cell : cells_) {
-    const ReferenceElement &e = elements_[cell.element];
-    const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
-    PetscScalar *x = nullptr, *xdot = nullptr, *xc = nullptr;
-    PetscInt n = 0, nd = 0, nc = 0;
-    PetscCall(DMPlexVecGetClosure(dm_, s, local, cell.cell, &n, &x));
-    PetscCall(DMPlexVecGetClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
-    PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
-    F.assign(n, 0.0);
-    CellKernel kernel{
-        e, dim_, m, pressure && m.porous, mode.mass_scale, {0, 0, 0}, scene_->axisymmetric};
-    for (int d = 0; d < dim_; ++d)
-      kernel.gravity[d] = gravityVector(d);
-    kernel(
-        xc, x, xdot, (int)n,
-        [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
-        [&](const double *p) { return initialPressure(p); }, F.data(), 0.0, nullptr);
-    PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell.cell, &nc, &xc));
-    PetscCall(DMPlexVecRestoreClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
-    PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &x));
-    // ADD_ALL_VALUES keeps the entries of constrained dofs: they are the reactions.
-    PetscCall(DMPlexVecSetClosure(dm_, s, f, cell.cell, F.data(), ADD_ALL_VALUES));
+  std::vector<double> F, x, xdot, xc;
+  {
+    // Closures through the cache (closure_cache.hpp), read from and added to the local arrays:
+    // the same values and additions, in the same order, as DMPlexVec{Get,Set}Closure.
+    const PetscScalar *ua, *ra, *ca;
+    PetscScalar *fa;
+    PetscCall(VecGetArrayRead(local, &ua));
+    PetscCall(VecGetArrayRead(local_rate, &ra));
+    PetscCall(VecGetArrayRead(coords, &ca));
+    PetscCall(VecGetArray(f, &fa));
+    for (size_t i = 0; i < cells_.size(); ++i) {
+      const BulkCell &cell = cells_[i];
+      const ReferenceElement &e = elements_[cell.element];
+      const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
+      const int n = closures_.closureSize(i), nc = closures_.coordinateSize(i);
+      x.resize(n), xdot.resize(n), xc.resize(nc);
+      gatherClosure(ua, closures_.local(i), n, x.data());
+      gatherClosure(ra, closures_.local(i), n, xdot.data());
+      gatherClosure(ca, closures_.coordinates(i), nc, xc.data());
+      F.assign(n, 0.0);
+      CellKernel kernel{
+          e, dim_, m, pressure && m.porous, mode.mass_scale, {0, 0, 0}, scene_->axisymmetric};
+      for (int d = 0; d < dim_; ++d)
+        kernel.gravity[d] = gravityVector(d);
+      kernel(
+          xc.data(), x.data(), xdot.data(), n,
+          [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
+          [&](const double *p) { return initialPressure(p); }, F.data(), 0.0, nullptr);
+      // All entries, constrained dofs included: they are the reactions (ADD_ALL_VALUES).
+      addClosure(F.data(), closures_.local(i), n, fa);
+    }
+    PetscCall(VecRestoreArray(f, &fa));
+    PetscCall(VecRestoreArrayRead(coords, &ca));
+    PetscCall(VecRestoreArrayRead(local_rate, &ra));
+    PetscCall(VecRestoreArrayRead(local, &ua));
   }
   PetscCall(beginLogEvent(events_.interface_residual));
   PetscCall(interfaces_.residual(local, InterfaceRates{local_rate, mode.dt}, mode.mass_scale, f));
@@ -553,40 +573,45 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
 PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_rate,
                                  double mass_scale, Mat J) const
 {
-  PetscSection s, gs, csec;
   Vec coords;
+  const PetscScalar *ua, *ra, *ca;
   PetscFunctionBeginUser;
   PetscCall(beginLogEvent(events_.jacobian));
   PetscCall(MatZeroEntries(J));
-  PetscCall(DMGetLocalSection(dm_, &s));
-  PetscCall(DMGetGlobalSection(dm_, &gs));
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  PetscCall(DMGetCoordinateSection(dm_, &csec));
   const bool pressure = scene_->hasPressure();
-  std::vector<double> F, K;
-  for (const auto &cell : cells_) {
+  std::vector<double> F, K, x, xdot, xc;
+  std::vector<PetscInt> rows;
+  // Closures and matrix indices through the cache (closure_cache.hpp); one MatSetValues per
+  // cell with the indices DMPlexMatSetClosure would compute (constrained dofs negative).
+  PetscCall(VecGetArrayRead(local, &ua));
+  PetscCall(VecGetArrayRead(local_rate, &ra));
+  PetscCall(VecGetArrayRead(coords, &ca));
+  for (size_t i = 0; i < cells_.size(); ++i) {
+    const BulkCell &cell = cells_[i];
     const ReferenceElement &e = elements_[cell.element];
     const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
-    PetscScalar *x = nullptr, *xdot = nullptr, *xc = nullptr;
-    PetscInt n = 0, nd = 0, nc = 0;
-    PetscCall(DMPlexVecGetClosure(dm_, s, local, cell.cell, &n, &x));
-    PetscCall(DMPlexVecGetClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
-    PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell.cell, &nc, &xc));
+    const int n = closures_.closureSize(i), nc = closures_.coordinateSize(i);
+    x.resize(n), xdot.resize(n), xc.resize(nc), rows.resize(n);
+    gatherClosure(ua, closures_.local(i), n, x.data());
+    gatherClosure(ra, closures_.local(i), n, xdot.data());
+    gatherClosure(ca, closures_.coordinates(i), nc, xc.data());
     F.assign(n, 0.0);
-    K.assign(n * n, 0.0);
+    K.assign((size_t)n * n, 0.0);
     CellKernel kernel{
         e, dim_, m, pressure && m.porous, mass_scale, {0, 0, 0}, scene_->axisymmetric};
     for (int d = 0; d < dim_; ++d)
       kernel.gravity[d] = gravityVector(d);
     kernel(
-        xc, x, xdot, (int)n,
+        xc.data(), x.data(), xdot.data(), n,
         [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
         [&](const double *p) { return initialPressure(p); }, F.data(), shift, K.data());
-    PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell.cell, &nc, &xc));
-    PetscCall(DMPlexVecRestoreClosure(dm_, s, local_rate, cell.cell, &nd, &xdot));
-    PetscCall(DMPlexVecRestoreClosure(dm_, s, local, cell.cell, &n, &x));
-    PetscCall(DMPlexMatSetClosure(dm_, s, gs, J, cell.cell, K.data(), ADD_VALUES));
+    closures_.globalIndices(i, rows.data());
+    PetscCall(MatSetValues(J, n, rows.data(), n, rows.data(), K.data(), ADD_VALUES));
   }
+  PetscCall(VecRestoreArrayRead(coords, &ca));
+  PetscCall(VecRestoreArrayRead(local_rate, &ra));
+  PetscCall(VecRestoreArrayRead(local, &ua));
   PetscCall(beginLogEvent(events_.interface_jacobian));
   PetscCall(interfaces_.jacobian(local, InterfaceRates{local_rate, shift > 0.0 ? 1.0 / shift : 0.0},
                                  shift, mass_scale, J));
