@@ -25,7 +25,7 @@ set_tests_properties(caisson.axisym_drained caisson.axisym_partially_drained
                      caisson.quarter_partially_drained caisson.quarter_vs_axisym PROPERTIES PROCESSORS 2 TIMEOUT 600)
 
 # The partially drained caissons again with the iterative preset options/solvers/fieldsplit.opts
-# (three named splits; sliding skirts make the displacement block unsymmetric): the same checks
+# (named splits; sliding skirts make the displacement block unsymmetric): the same checks
 # must pass, without cut-backs.
 foreach(case axisym_partially_drained quarter_partially_drained)
   poroseam_preset_test(fieldsplit caisson.fieldsplit.${case} "caisson;solvers"
