@@ -1,10 +1,11 @@
 #include "poroseam/collective_check.hpp"
+#include "poroseam/external_program.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/mesh.hpp"
 #include "poroseam/partition.hpp"
 #include "poroseam/reference_element.hpp"
 
-#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -62,15 +63,19 @@ std::string meshGeometry(const std::string &geo, double size_factor, const std::
 {
   std::string stem = geo.substr(geo.find_last_of('/') + 1);
   stem = stem.substr(0, stem.size() - 4);
-  if (std::system(("mkdir -p '" + work_dir + "'").c_str()) != 0)
-    return "cannot create directory '" + work_dir + "'";
+  std::error_code failed;
+  std::filesystem::create_directories(work_dir, failed);
+  if (failed) return "cannot create directory '" + work_dir + "': " + failed.message();
   msh = work_dir + "/" + stem + ".msh";
-  std::ostringstream cmd;
-  cmd.precision(17);
-  cmd << "gmsh -3 -v 1 -format msh22 -clscale " << size_factor << " -o '" << msh << "' '" << geo
-      << "' > '" << work_dir << "/gmsh.log' 2>&1";
-  if (std::system(cmd.str().c_str()) != 0 || !fileExists(msh))
-    return "gmsh failed to mesh '" + geo + "' (see " + work_dir + "/gmsh.log)";
+  std::ostringstream factor;
+  factor.precision(17);
+  factor << size_factor;
+  const std::string log = work_dir + "/gmsh.log";
+  const std::string why = runProgram(
+      {"gmsh", "-3", "-v", "1", "-format", "msh22", "-clscale", factor.str(), "-o", msh, geo}, log);
+  if (!why.empty() || !fileExists(msh))
+    return "gmsh failed to mesh '" + geo + "' (" + (why.empty() ? "no mesh written" : why) +
+           "; see " + log + ")";
   return "";
 }
 

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <petscts.h>
 #include <string>
 #include <vector>
@@ -577,11 +578,15 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(registerLogEvents(&run.events));
   run.problem.setLogEvents(run.events);
   PetscCall(readMeshOptions(comm, run.scene));
-  if (rank == 0) {
-    const std::string cmd = "mkdir -p '" + run.scene.output_dir + "'";
-    PetscCheck(std::system(cmd.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
-               "cannot create the output directory '%s' (option -output_dir)",
-               run.scene.output_dir.c_str());
+  { // rank 0 creates it; every rank learns whether that worked, so none waits for the others
+    std::error_code failed;
+    if (rank == 0) std::filesystem::create_directories(run.scene.output_dir, failed);
+    int ok = !failed;
+    PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+    const std::string why = failed ? ": " + failed.message() : "";
+    PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN,
+               "cannot create the output directory '%s' (option -output_dir)%s",
+               run.scene.output_dir.c_str(), why.c_str());
   }
   std::vector<PhysicalName> names;
   int dim;
