@@ -7,7 +7,7 @@ foreach(case
     missing_mesh mesh_extension unknown_region unknown_boundary bc_unlisted_boundary
     missing_E E_zero E_negative nu_half nu_below_minus_one negative_permeability
     missing_material unknown_material non_numeric probe_wrong_coords probe_outside
-    inverted_element unused_option help)
+    inverted_element unused_option shell_characters_in_paths help)
   poroseam_scene_test(input.${case} "input" input/bad_input.py --case ${case})
 endforeach()
 # The same failures on 2 ranks: every rank must exit.

@@ -76,6 +76,14 @@ CASES = {
     # good runs
     "unused_option": dict(args=["-not_an_option", "3", "-ts_max_steps", "2"], ok=True,
                           expect=["-not_an_option", "never used"]),
+    # paths with shell characters are only ever file names: gmsh is run without a shell, so
+    # the quote and the $(...) in the mesh path and output directory do nothing but name them
+    "shell_characters_in_paths": dict(
+        args=["-mesh", "{out}/it's $(touch pwned)/column.geo",
+              "-output_dir", "{out}/it's $(touch pwned)/results", "-ts_max_steps", "1"],
+        copy=("meshes/terzaghi_column_2d.geo", "it's $(touch pwned)/column.geo"), ok=True,
+        expect=["1 steps"], absent=["pwned", "{out}/pwned", "{out}/it's $(touch pwned)/pwned"],
+        present=["{out}/it's $(touch pwned)/results/timeseries.csv"]),
     "help": dict(help=True, ok=True,
                  expect=["-region_<r>_E", "-region_<r>_permeability", "-bc_<b>_traction",
                          "-initial_state", "-probe_<name>", "timeseries.csv"]),
@@ -126,7 +134,13 @@ def main():
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     if "copy" in case:
-        shutil.copy(os.path.join(SOURCE, case["copy"][0]), os.path.join(out, case["copy"][1]))
+        target = os.path.join(out, case["copy"][1])
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+        shutil.copy(os.path.join(SOURCE, case["copy"][0]), target)
+    for path in case.get("absent", []):  # e.g. left by an earlier, broken build
+        path = os.path.join(SOURCE, path.format(out=out))
+        if os.path.exists(path):
+            os.remove(path)
     if case.get("help"):
         cmd = [EXE, "-help"]
     else:
@@ -164,6 +178,12 @@ def main():
     for s in case["expect"]:
         if s not in message:
             failures.append(f"the output (options echo removed) does not contain '{s}'")
+    for path in case.get("absent", []):
+        if os.path.exists(os.path.join(SOURCE, path.format(out=out))):
+            failures.append(f"'{path.format(out=out)}' exists: a path was run as a command")
+    for path in case.get("present", []):
+        if not os.path.exists(path.format(out=out)):
+            failures.append(f"'{path.format(out=out)}' was not written")
     for s in CRASH:
         if re.search(s, text):
             failures.append(f"crash signature '{s}' in the output")
