@@ -22,10 +22,11 @@ import report
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # Mesh size ladders (-mesh_size_factor; unknowns grow like factor^-dim). 3D quarter caisson:
-# factor 1 is the scene's default mesh (37,334 unknowns), 0.5 about 300,000.
+# factor 1 is the scene's default mesh (37,334 unknowns), 0.5 gives 281,908 and 0.48 about
+# 320,000 (the issue asks for >= 300k).
 MODES = {
     "full": {"scenes": {"caisson_axisym_partially_drained": [1.0, 0.5, 0.25],
-                        "caisson_partially_drained": [1.0, 0.8, 0.63, 0.5]},
+                        "caisson_partially_drained": [1.0, 0.8, 0.63, 0.48]},
              "steps": 3, "timeout": 900.0, "budget": 3600.0, "triad_doubles": 10_000_000,
              "reference_repeat": 3},
     "quick": {"scenes": {"caisson_axisym_partially_drained": [1.0],
@@ -61,7 +62,7 @@ def arguments():
     p = argparse.ArgumentParser(
         prog="scripts/bench", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="Modes: full (default; 3D caisson factors 1, 0.8, 0.63, 0.5 and axisymmetric 1, "
+        epilog="Modes: full (default; 3D caisson factors 1, 0.8, 0.63, 0.48 and axisymmetric 1, "
                "0.5, 0.25, 3 steps each, within an hour), --quick (3D factors 2 and 1.5, "
                "axisymmetric 1, 2 steps, within 5 minutes), --smoke (axisymmetric factor 2, "
                "1 step: that it all runs, for the test suite).")
