@@ -1,0 +1,254 @@
+// Setting up the interface integration points: geometry, local frames, initial contact
+// stress and the closures of the cohesive cells (the loops over them are in
+// interface_assembly.cpp).
+#include "poroseam/interface_assembly.hpp"
+
+#include "poroseam/closure_cache.hpp"
+#include "poroseam/collective_check.hpp"
+#include "poroseam/interface_flow.hpp"
+#include "poroseam/interfaces.hpp"
+
+#include <cmath>
+#include <map>
+
+namespace poroseam {
+namespace {
+
+PetscErrorCode closureVertices(DM dm, PetscInt point, std::vector<PetscInt> &vertices)
+{
+  PetscInt vStart, vEnd, n, *pts = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMPlexGetTransitiveClosure(dm, point, PETSC_TRUE, &n, &pts));
+  vertices.clear();
+  for (PetscInt i = 0; i < n; ++i)
+    if (pts[2 * i] >= vStart && pts[2 * i] < vEnd) vertices.push_back(pts[2 * i]);
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, point, PETSC_TRUE, &n, &pts));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode vertexCoordinates(DM dm, PetscInt v, int dim, double x[3])
+{
+  Vec coords;
+  PetscSection csec;
+  const PetscScalar *a;
+  PetscInt off;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(PetscSectionGetOffset(csec, v, &off));
+  PetscCall(VecGetArrayRead(coords, &a));
+  for (int d = 0; d < dim; ++d)
+    x[d] = a[off + d];
+  PetscCall(VecRestoreArrayRead(coords, &a));
+  PetscFunctionReturn(0);
+}
+
+void normalise(double v[3])
+{
+  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (int d = 0; d < 3; ++d)
+    v[d] /= n;
+}
+
+} // namespace
+
+PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress initial_stress,
+                                        InitialPressure initial_pressure)
+{
+  PetscFunctionBeginUser;
+  dm_ = dm;
+  scene_ = &scene;
+  initial_pressure_ = std::move(initial_pressure);
+  dim_ = scene.dim;
+  cells_.clear();
+  initial_.clear();
+  committed_.clear();
+  closures_ = ClosureCache();
+  if (scene.interfaces.empty()) PetscFunctionReturn(0);
+  DMLabel iface, surface, side, normal;
+  PetscCall(DMGetLabel(dm, kInterfaceLabel, &iface));
+  PetscCall(DMGetLabel(dm, kInterfaceSurfaceLabel, &surface));
+  PetscCall(DMGetLabel(dm, kInterfaceSideLabel, &side));
+  PetscCall(DMGetLabel(dm, kInterfaceNormalLabel, &normal));
+  std::map<std::pair<int, bool>, int> elementOf;
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    DMPolytopeType t;
+    PetscCall(DMPlexGetCellType(dm, c, &t));
+    if (!isCohesive(t)) continue;
+    PetscInt vi, vs, vside, vn;
+    PetscCall(DMLabelGetValue(iface, c, &vi));
+    PetscCall(DMLabelGetValue(surface, c, &vs));
+    PetscCall(DMLabelGetValue(side, c, &vside));
+    PetscCall(DMLabelGetValue(normal, c, &vn));
+    Cell cell;
+    cell.cell = c;
+    cell.iface = (int)vi - 1;
+    cell.surface = (int)vs - 1;
+    const Interface &in = scene.interfaces[cell.iface];
+    const PetscInt *cone;
+    PetscCall(DMPlexGetCone(dm, c, &cone));
+    const PetscInt face1 = cone[vside - 1], face2 = cone[2 - vside];
+    DMPolytopeType ft;
+    PetscCall(DMPlexGetCellType(dm, face1, &ft));
+    const auto key = std::make_pair((int)ft, in.nodal_integration);
+    if (!elementOf.count(key)) {
+      ReferenceElement e;
+      if (in.nodal_integration)
+        PetscCall(ReferenceElement::createNodal(ft, &e));
+      else
+        PetscCall(ReferenceElement::create(ft, &e));
+      elements_.push_back(e);
+      elementOf[key] = (int)elements_.size() - 1;
+    }
+    cell.element = elementOf[key];
+    const auto gkey = std::make_pair((int)ft, false);
+    if (!elementOf.count(gkey)) {
+      ReferenceElement g;
+      PetscCall(ReferenceElement::create(ft, &g));
+      elements_.push_back(g);
+      elementOf[gkey] = (int)elements_.size() - 1;
+    }
+    cell.gauss_element = elementOf[gkey];
+    const ReferenceElement &e = elements_[cell.element];
+
+    // Closure offsets. PETSc orders a closure field by field, point by point: all
+    // displacements, then pressures, then interface pressures (lateral edges).
+    PetscSection sec;
+    PetscCall(DMGetLocalSection(dm, &sec));
+    PetscInt numFields;
+    PetscCall(PetscSectionGetNumFields(sec, &numFields));
+    std::map<PetscInt, int> offset[3];
+    std::vector<PetscInt> lateral;
+    {
+      PetscInt n, *pts = nullptr;
+      PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
+      int running = 0;
+      for (PetscInt f = 0; f < numFields; ++f)
+        for (PetscInt k = 0; k < n; ++k) {
+          PetscInt dof;
+          PetscCall(PetscSectionGetFieldDof(sec, pts[2 * k], f, &dof));
+          if (dof) offset[f][pts[2 * k]] = running;
+          running += (int)dof;
+        }
+      for (PetscInt k = 0; k < n; ++k) {
+        DMPolytopeType pt;
+        PetscCall(DMPlexGetCellType(dm, pts[2 * k], &pt));
+        if (pt == DM_POLYTOPE_POINT_PRISM_TENSOR) lateral.push_back(pts[2 * k]);
+      }
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
+    }
+    auto offsetOf = [&](int field, PetscInt point) {
+      if (field >= numFields) return -1;
+      const auto it = offset[field].find(point);
+      return it == offset[field].end() ? -1 : it->second;
+    };
+    // Side-1 face vertices in the face's own order (the reference element follows it), their
+    // partners on side 2 (same coordinates) and the lateral edge joining each pair.
+    std::vector<PetscInt> v1, v2;
+    PetscCall(closureVertices(dm, face1, v1));
+    PetscCall(closureVertices(dm, face2, v2));
+    std::vector<double> x1(v1.size() * dim_);
+    cell.flow = in.flow;
+    const int side1_region = scene.regionIndexOfTag(in.side1_tag);
+    cell.gap_water = !in.flow && scene.drained && side1_region >= 0 &&
+                     scene.regions[side1_region].porous() && scene.gravity > 0.0;
+    cell.porous1 = cell.porous2 = true;
+    for (size_t a = 0; a < v1.size(); ++a) {
+      PetscCall(vertexCoordinates(dm, v1[a], dim_, &x1[a * dim_]));
+      PetscInt partner = -1;
+      double best = 1e300;
+      for (size_t b = 0; b < v2.size(); ++b) {
+        double y[3], d2 = 0.0;
+        PetscCall(vertexCoordinates(dm, v2[b], dim_, y));
+        for (int d = 0; d < dim_; ++d)
+          d2 += (y[d] - x1[a * dim_ + d]) * (y[d] - x1[a * dim_ + d]);
+        if (d2 < best) best = d2, partner = v2[b];
+      }
+      cell.u1.push_back(offsetOf(0, v1[a]));
+      cell.u2.push_back(offsetOf(0, partner));
+      cell.p1.push_back(offsetOf(1, v1[a]));
+      cell.p2.push_back(offsetOf(1, partner));
+      cell.porous1 = cell.porous1 && cell.p1.back() >= 0;
+      cell.porous2 = cell.porous2 && cell.p2.back() >= 0;
+      int p3 = -1;
+      for (PetscInt edge : lateral) {
+        const PetscInt *econe;
+        PetscCall(DMPlexGetCone(dm, edge, &econe));
+        if (econe[0] == v1[a] || econe[1] == v1[a]) p3 = offsetOf(2, edge);
+      }
+      cell.p3.push_back(p3);
+      cell.flow = cell.flow && p3 >= 0;
+    }
+    // Local frame from cone[0]'s vertex order and the orientation found before distribution.
+    {
+      std::vector<PetscInt> v0;
+      PetscCall(closureVertices(dm, cone[0], v0));
+      std::vector<double> x0(v0.size() * dim_);
+      for (size_t a = 0; a < v0.size(); ++a)
+        PetscCall(vertexCoordinates(dm, v0[a], dim_, &x0[a * dim_]));
+      double n[3];
+      faceNormal(x0.data(), (int)v0.size(), dim_, n);
+      const double sign = vn == 1 ? 1.0 : -1.0;
+      for (int d = 0; d < 3; ++d)
+        cell.frame[0][d] = sign * n[d];
+      normalise(cell.frame[0]);
+      double *e1 = cell.frame[0], *e2 = cell.frame[1], *e3 = cell.frame[2];
+      if (dim_ == 2) {
+        e2[0] = -e1[1], e2[1] = e1[0], e2[2] = 0.0;
+        e3[0] = e3[1] = 0.0, e3[2] = 1.0;
+      } else {
+        double t[3] = {x0[3] - x0[0], x0[4] - x0[1], x0[5] - x0[2]};
+        const double dot = t[0] * e1[0] + t[1] * e1[1] + t[2] * e1[2];
+        for (int d = 0; d < 3; ++d)
+          e2[d] = t[d] - dot * e1[d];
+        normalise(e2);
+        e3[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        e3[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        e3[2] = e1[0] * e2[1] - e1[1] * e2[0];
+      }
+    }
+    // Initial state at each integration point, from the side-1 initial stress:
+    // p'_N0 = -e1 . sigma'_0 e1, tau_0k = e_(k+1) . sigma'_0 e1 (capped by friction).
+    cell.history = initial_.size();
+    for (int q = 0; q < e.num_quadrature; ++q) {
+      double x[3] = {0, 0, 0}, s0[3][3];
+      for (int a = 0; a < e.num_vertices; ++a)
+        for (int d = 0; d < dim_; ++d)
+          x[d] += e.basis[q * e.num_vertices + a] * x1[a * dim_ + d];
+      initial_stress(x, in.side1_tag, s0);
+      double traction[3] = {0, 0, 0};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          traction[i] += s0[i][j] * cell.frame[0][j];
+      physics::ContactInitial init;
+      physics::ContactHistory history;
+      double pn = 0.0;
+      for (int i = 0; i < 3; ++i)
+        pn -= cell.frame[0][i] * traction[i];
+      init.contact_pressure_effective = std::max(pn, 0.0);
+      double tau[2] = {0, 0}, norm = 0.0;
+      for (int k = 0; k < dim_ - 1; ++k) {
+        for (int i = 0; i < 3; ++i)
+          tau[k] += cell.frame[k + 1][i] * traction[i];
+        norm += tau[k] * tau[k];
+      }
+      norm = std::sqrt(norm);
+      const double limit = in.friction * init.contact_pressure_effective;
+      for (int k = 0; k < dim_ - 1; ++k)
+        history.shear[k] = norm > limit ? tau[k] * limit / norm : tau[k];
+      initial_.push_back(init);
+      committed_.push_back(history);
+    }
+    cells_.push_back(cell);
+  }
+  std::vector<PetscInt> points;
+  for (const Cell &cell : cells_)
+    points.push_back(cell.cell);
+  PetscCall(closures_.setup(dm, points));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam
