@@ -94,6 +94,15 @@ private:
                                   Vec f) const;
   void initialStress(const double x[], int region, double stress[3][3]) const;
   double gravityVector(int d) const;
+  /// Work vectors of one cell, kept across the cells of an assembly loop.
+  struct CellWork {
+    std::vector<double> x, xdot, xc, F, K;
+  };
+  /// Bulk terms of cell i, its closure read through closures_ from the local arrays of the
+  /// solution u, its rate u_t and the coordinates: w.F, and with `with_jacobian` w.K
+  /// (d/du + shift d/du_t). Shared by residual and Jacobian so both evaluate the same cell.
+  void cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t, const PetscScalar *coords,
+                 double mass_scale, double shift, bool with_jacobian, CellWork &w) const;
 
   DM dm_ = nullptr;
   const Scene *scene_ = nullptr;

@@ -331,6 +331,31 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
   PetscFunctionReturn(0);
 }
 
+void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
+                        const PetscScalar *coords, double mass_scale, double shift,
+                        bool with_jacobian, CellWork &w) const
+{
+  const BulkCell &cell = cells_[i];
+  const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
+  const int n = closures_.closureSize(i), nc = closures_.coordinateSize(i);
+  w.x.resize(n), w.xdot.resize(n), w.xc.resize(nc);
+  gatherClosure(u, closures_.local(i), n, w.x.data());
+  gatherClosure(u_t, closures_.local(i), n, w.xdot.data());
+  gatherClosure(coords, closures_.coordinates(i), nc, w.xc.data());
+  w.F.assign(n, 0.0);
+  if (with_jacobian) w.K.assign((size_t)n * n, 0.0);
+  CellKernel kernel{
+      elements_[cell.element], dim_, m, scene_->hasPressure() && m.porous, mass_scale, {0, 0, 0},
+      scene_->axisymmetric};
+  for (int d = 0; d < dim_; ++d)
+    kernel.gravity[d] = gravityVector(d);
+  kernel(
+      w.xc.data(), w.x.data(), w.xdot.data(), n,
+      [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
+      [&](const double *p) { return initialPressure(p); }, w.F.data(), shift,
+      with_jacobian ? w.K.data() : nullptr);
+}
+
 PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
                                          const ResidualMode &mode, Vec f) const
 {
@@ -341,8 +366,7 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
   PetscCall(DMGetLocalSection(dm_, &s));
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
   PetscCall(DMGetCoordinateSection(dm_, &csec));
-  const bool pressure = scene_->hasPressure();
-  std::vector<double> F, x, xdot, xc;
+  CellWork work;
   {
     // Closures through the cache (closure_cache.hpp), read from and added to the local arrays:
     // the same values and additions, in the same order, as DMPlexVec{Get,Set}Closure.
@@ -353,25 +377,9 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
     PetscCall(VecGetArrayRead(coords, &ca));
     PetscCall(VecGetArray(f, &fa));
     for (size_t i = 0; i < cells_.size(); ++i) {
-      const BulkCell &cell = cells_[i];
-      const ReferenceElement &e = elements_[cell.element];
-      const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
-      const int n = closures_.closureSize(i), nc = closures_.coordinateSize(i);
-      x.resize(n), xdot.resize(n), xc.resize(nc);
-      gatherClosure(ua, closures_.local(i), n, x.data());
-      gatherClosure(ra, closures_.local(i), n, xdot.data());
-      gatherClosure(ca, closures_.coordinates(i), nc, xc.data());
-      F.assign(n, 0.0);
-      CellKernel kernel{
-          e, dim_, m, pressure && m.porous, mode.mass_scale, {0, 0, 0}, scene_->axisymmetric};
-      for (int d = 0; d < dim_; ++d)
-        kernel.gravity[d] = gravityVector(d);
-      kernel(
-          xc.data(), x.data(), xdot.data(), n,
-          [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
-          [&](const double *p) { return initialPressure(p); }, F.data(), 0.0, nullptr);
+      cellTerms(i, ua, ra, ca, mode.mass_scale, 0.0, false, work);
       // All entries, constrained dofs included: they are the reactions (ADD_ALL_VALUES).
-      addClosure(F.data(), closures_.local(i), n, fa);
+      addClosure(work.F.data(), closures_.local(i), closures_.closureSize(i), fa);
     }
     PetscCall(VecRestoreArray(f, &fa));
     PetscCall(VecRestoreArrayRead(coords, &ca));
@@ -383,6 +391,7 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
   PetscCall(endLogEvent(events_.interface_residual));
   if (!mode.include_loads) PetscFunctionReturn(0);
   // Natural conditions: R_u -= int t . v, R_p += s int psi q_n.
+  std::vector<double> F;
   for (const auto &face : faces_) {
     const auto &bc = scene_->conditions[face.condition];
     const ReferenceElement &e = elements_[face.element];
@@ -428,8 +437,7 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
   PetscCall(beginLogEvent(events_.jacobian));
   PetscCall(MatZeroEntries(J));
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  const bool pressure = scene_->hasPressure();
-  std::vector<double> F, K, x, xdot, xc;
+  CellWork work;
   std::vector<PetscInt> rows;
   // Closures and matrix indices through the cache (closure_cache.hpp); one MatSetValues per
   // cell with the indices DMPlexMatSetClosure would compute (constrained dofs negative).
@@ -437,26 +445,11 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
   PetscCall(VecGetArrayRead(local_rate, &ra));
   PetscCall(VecGetArrayRead(coords, &ca));
   for (size_t i = 0; i < cells_.size(); ++i) {
-    const BulkCell &cell = cells_[i];
-    const ReferenceElement &e = elements_[cell.element];
-    const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
-    const int n = closures_.closureSize(i), nc = closures_.coordinateSize(i);
-    x.resize(n), xdot.resize(n), xc.resize(nc), rows.resize(n);
-    gatherClosure(ua, closures_.local(i), n, x.data());
-    gatherClosure(ra, closures_.local(i), n, xdot.data());
-    gatherClosure(ca, closures_.coordinates(i), nc, xc.data());
-    F.assign(n, 0.0);
-    K.assign((size_t)n * n, 0.0);
-    CellKernel kernel{
-        e, dim_, m, pressure && m.porous, mass_scale, {0, 0, 0}, scene_->axisymmetric};
-    for (int d = 0; d < dim_; ++d)
-      kernel.gravity[d] = gravityVector(d);
-    kernel(
-        xc.data(), x.data(), xdot.data(), n,
-        [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
-        [&](const double *p) { return initialPressure(p); }, F.data(), shift, K.data());
+    cellTerms(i, ua, ra, ca, mass_scale, shift, true, work);
+    const int n = closures_.closureSize(i);
+    rows.resize(n);
     closures_.globalIndices(i, rows.data());
-    PetscCall(MatSetValues(J, n, rows.data(), n, rows.data(), K.data(), ADD_VALUES));
+    PetscCall(MatSetValues(J, n, rows.data(), n, rows.data(), work.K.data(), ADD_VALUES));
   }
   PetscCall(VecRestoreArrayRead(coords, &ca));
   PetscCall(VecRestoreArrayRead(local_rate, &ra));
