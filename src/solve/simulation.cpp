@@ -5,6 +5,7 @@
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/log_events.hpp"
+#include "poroseam/newton_forcing.hpp"
 #include "poroseam/mesh.hpp"
 #include "poroseam/nullspace.hpp"
 #include "poroseam/probes.hpp"
@@ -53,7 +54,12 @@ struct Run {
   double zero_state_scale = 0.0; ///< gross residual of the zero state (weight, initial stress)
   double stage_time = 0.0;       ///< time of the step being solved
   double reference_rtol = 1e-9;  ///< -snes_reference_rtol
-  double ksp_rtol = 0.0;         ///< -ksp_rtol: the linear tolerance of a step's first solve
+  double ksp_rtol = 0.0;         ///< -ksp_rtol: the tightest linear tolerance Newton asks for
+  /// Inexact Newton forcing (convergenceTest): the residual norm of the last Newton iterate,
+  /// and how much the first Newton iteration of the last step reduced the residual (0: no
+  /// step yet, or one that converged in its first iteration).
+  double newton_last_fnorm = 0.0;
+  double first_contraction = 0.0;
   Vec jacobian_diagonal = nullptr; ///< with a fieldsplit: diag of the Jacobian (vertex_blocks)
   /// Profiling: -log_view events and phases of this run, and whether the first Jacobian
   /// (PsFirstJacobian) is behind us.
@@ -323,11 +329,9 @@ PetscErrorCode forceLevel(Run &run, Vec X, double *level)
 /// displacement-driven step of a stiff body starts with a huge residual that says nothing
 /// of the forces that matter.
 ///
-/// It also keeps an iterative linear solver from solving more exactly than that test needs:
-/// a step's first linear solve uses -ksp_rtol; each later one only needs to bring the residual
-/// a hundred times below the target, rtol = max(-ksp_rtol, min(0.1, 0.01 target / |F|)).
-/// Without this, a second Newton iteration, whose right-hand side is already tiny, chased
-/// the round-off floor of a penalty-stiff system for hundreds of Krylov iterations.
+/// It also sets the linear tolerance of the next Newton solve (an inexact Newton method;
+/// linearTolerance), so that an iterative solver does not solve more exactly than the next
+/// Newton iterate can use.
 PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
                                PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
 {
@@ -336,8 +340,12 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
   PetscFunctionBeginUser;
   PetscCall(SNESGetKSP(snes, &ksp));
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  const double contraction =
+      it > 0 && run.newton_last_fnorm > 0.0 ? fnorm / run.newton_last_fnorm : 0.0;
+  run.newton_last_fnorm = fnorm;
   if (it == 0) {
-    PetscCall(KSPSetTolerances(ksp, run.ksp_rtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(KSPSetTolerances(ksp, linearTolerance(run.ksp_rtol, 0.0, run.first_contraction),
+                               PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
     PetscFunctionReturn(0);
   }
   if (*reason != SNES_CONVERGED_ITERATING) PetscFunctionReturn(0);
@@ -348,11 +356,13 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
   const double scale = std::max(run.zero_state_scale, level);
   const double target = run.reference_rtol * scale;
   PetscCall(PetscInfo(snes, "poroseam: residual %g, force scale %g\n", (double)fnorm, scale));
-  if (scale > 0.0 && fnorm <= target) {
+  const bool converged = scale > 0.0 && fnorm <= target;
+  if (it == 1) run.first_contraction = converged ? 0.0 : contraction;
+  if (converged) {
     *reason = SNES_CONVERGED_FNORM_ABS;
   } else if (fnorm > 0.0) {
-    const double rtol = std::max(run.ksp_rtol, std::min(0.1, 0.01 * target / fnorm));
-    PetscCall(KSPSetTolerances(ksp, rtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(KSPSetTolerances(ksp, linearTolerance(run.ksp_rtol, target / fnorm, contraction),
+                               PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   }
   PetscFunctionReturn(0);
 }

@@ -262,14 +262,15 @@ def case_partially_drained(args, quarter):
     if quarter and common.SOLVER == "fieldsplit":
         # Guard of the iterative preset (iteration counts are deterministic for a given mesh and
         # number of ranks): outer Krylov iterations per Newton iteration recorded on this mesh
-        # (factor 2, 2 ranks) with one BoomerAMG on both pressures: worst step 19, mean 11.84.
-        # Bounds 10 % above. Earlier presets: 15-36 (bs = 1 GAMG, 15 inner iterations), then
-        # worst 21.6, mean 15.9 (vertex_blocks, pressures split by split).
+        # (factor 2, 2 ranks) with the inexact Newton forcing (newton_forcing.hpp) and one
+        # BoomerAMG (HMIS) on both pressures: worst step 15, mean 8.43. Bounds 10 % above.
+        # Earlier presets: 15-36 (bs = 1 GAMG, 15 inner iterations), then worst 21.6, mean 15.9
+        # (vertex_blocks, pressures split by split), then 19 and 11.84 (every solve to 1e-8).
         per_newton = np.asarray(ts["ksp_its"][1:], float) / np.asarray(ts["newton_its"][1:], float)
         chk.check("fieldsplit: max over steps of Krylov iterations per Newton iteration",
-                  float(per_newton.max()), 21)
+                  float(per_newton.max()), 16.5)
         chk.check("fieldsplit: Krylov iterations per Newton iteration over the run",
-                  float(np.sum(ts["ksp_its"][1:]) / np.sum(ts["newton_its"][1:])), 13)
+                  float(np.sum(ts["ksp_its"][1:]) / np.sum(ts["newton_its"][1:])), 9.3)
     equilibrium(chk, run, "partially drained")
     dpw = -(col(ts, "caisson.lid.p3_force") - ts["caisson.lid.p3_force"][0])
     scope = "quarter" if quarter else "full circle"
