@@ -1,4 +1,4 @@
-# Verification scenes (closed forms in tests/support/analytic.py; drivers and scenes in
+# Verification scenes (closed forms in study/analytic.py; drivers and scenes in
 # tests/verification/; see the docstring of each driver for what it checks and why the
 # tolerances are what they are).  Included by tests/CMakeLists.txt.
 

@@ -32,7 +32,8 @@ if SOLVER:
     OUTPUT_ROOT = os.path.join(OUTPUT_ROOT, "solver-" + SOLVER)
 
 sys.path.insert(0, os.path.join(SOURCE, "tests", "support"))
-import analytic  # noqa: E402  (tests/support/analytic.py)
+sys.path.append(SOURCE)
+from study import analytic  # noqa: E402  (study/analytic.py, shared with scripts/study)
 
 
 def scene_path(name):

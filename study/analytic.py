@@ -1,4 +1,4 @@
-"""Closed-form solutions of Biot consolidation used by the verification tests.
+"""Closed-form solutions of Biot consolidation used by the verification tests and scripts/study.
 
 Conventions (the same as poroseam, DESIGN.md section 2): tension-positive stress, absolute
 pore pressure p (no gravity here), Biot coefficient ``alpha``, storage ``S = 1/M``, mobility
