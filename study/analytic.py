@@ -360,6 +360,146 @@ class Mandel:
 
 
 # --------------------------------------------------------------------------------------------
+# Terzaghi column crossed by a permeable joint
+# --------------------------------------------------------------------------------------------
+
+
+class JointColumn:
+    """Terzaghi's column (alpha = 1, S = 0, step load q, drained top, impervious fixed base)
+    crossed at depth d by a closed joint of finite transversal transmissivity (DESIGN 3.2):
+    the water crossing it per unit area is f = T1 (p_below - p3) = T2 (p3 - p_above), so the
+    pressure jumps by p_below - p_above = R f, R = 1/T1 + 1/T2, with f = kappa dp/dz (z depth,
+    upward flux) continuous across it.  In each layer dp/dt = c p_zz, c = kappa M_c.
+
+    Modes (self-adjoint with the plain L2 weight, the jump terms cancel):
+        phi(z) = sin(lam z)                                   z < d
+               = cos(lam d) / sin(lam (H - d)) cos(lam (H - z))   z > d
+        cos(lam H) = R kappa lam cos(lam d) sin(lam (H - d))   (R = 0: Terzaghi's lam H = pi (2m+1)/2)
+    p(z, t) = sum a_m phi_m(z) exp(-lam_m^2 c t), a_m = q int phi / int phi^2, int phi = 1/lam.
+    Settlement s = -q H / M_c + (1/M_c) int p dz - (q - p3) / K_N: the last term the joint's
+    penalty closure (p'_N = q - p3, no initial stress), p3 = p_below - f / T1.
+    Neglected: the storage of the closing gap, (1/K_N) dp3/dt per unit area against the
+    layers' H / M_c, a relative 1e-5 for K_N = 1e12, H = 1, M_c = 1.2e7."""
+
+    def __init__(self, q, H, d, M_c, mobility, R, K_N=np.inf, T1=np.inf, tol=1e-13):
+        self.q, self.H, self.d, self.Mc, self.kappa, self.R = q, H, d, M_c, mobility, R
+        self.K_N, self.T1, self.tol = K_N, T1, tol
+        self.c = mobility * M_c
+        self._lam = np.empty(0)
+
+    def _g(self, lam):
+        H, d = self.H, self.d
+        return np.cos(lam * H) - self.R * self.kappa * lam * np.cos(lam * d) * np.sin(lam * (H - d))
+
+    def roots(self, lam_max):
+        """The eigenvalues lam below lam_max (cached), by sign changes of g on a grid of
+        pi/(64 H) and bisection (g has no poles)."""
+        if self._lam.size and self._lam_max >= lam_max:
+            return self._lam[self._lam <= lam_max]
+        step = np.pi / (64.0 * self.H)
+        x = np.arange(step * 0.5, lam_max + step, step)
+        gx = self._g(x)
+        i = np.nonzero(np.sign(gx[:-1]) != np.sign(gx[1:]))[0]
+        lo, hi = x[i], x[i + 1]
+        glo = gx[i]
+        for _ in range(100):
+            mid = 0.5 * (lo + hi)
+            gm = self._g(mid)
+            same = np.sign(gm) == np.sign(glo)
+            lo, glo, hi = np.where(same, mid, lo), np.where(same, gm, glo), np.where(same, hi, mid)
+        self._lam, self._lam_max = 0.5 * (lo + hi), lam_max
+        return self._lam
+
+    def _modes(self, t):
+        t = float(t)
+        if t <= 0.0:
+            raise ValueError("JointColumn: t > 0 needed")
+        lam = self.roots(math.sqrt(-math.log(self.tol) / (self.c * t)) + 4.0 * np.pi / self.H)
+        H, d = self.H, self.d
+        A = np.cos(lam * d) / np.sin(lam * (H - d))
+        norm = (d / 2 - np.sin(2 * lam * d) / (4 * lam)
+                + A * A * ((H - d) / 2 + np.sin(2 * lam * (H - d)) / (4 * lam)))
+        a = self.q / lam / norm
+        return lam, A, a * np.exp(-lam * lam * self.c * t)
+
+    def pressure(self, z, times, side="below"):
+        """p(z, t) [Pa] for each t; at z = d the side "below" (deeper) or "above"."""
+        out = []
+        for t in np.atleast_1d(times):
+            lam, A, w = self._modes(t)
+            below = z > self.d or (z == self.d and side == "below")
+            phi = A * np.cos(lam * (self.H - z)) if below else np.sin(lam * z)
+            out.append(float(w @ phi))
+        return np.array(out)
+
+    def jump(self, times):
+        """p_below - p_above at the joint [Pa]."""
+        out = []
+        for t in np.atleast_1d(times):
+            lam, A, w = self._modes(t)
+            out.append(float(w @ (A * np.cos(lam * (self.H - self.d)) - np.sin(lam * self.d))))
+        return np.array(out)
+
+    def flux(self, times):
+        """Upward water flux through the joint per unit area, kappa dp/dz at d [m/s]."""
+        out = []
+        for t in np.atleast_1d(times):
+            lam, A, w = self._modes(t)
+            out.append(float(w @ (self.kappa * lam * np.cos(lam * self.d))))
+        return np.array(out)
+
+    def settlement(self, times):
+        """Top displacement [m] (negative = down), penalty closure of the joint included."""
+        out = []
+        for t in np.atleast_1d(times):
+            lam, A, w = self._modes(t)
+            integral = float(np.sum(w / lam))
+            p_below = float(w @ (A * np.cos(lam * (self.H - self.d))))
+            f = float(w @ (self.kappa * lam * np.cos(lam * self.d)))
+            p3 = p_below - f / self.T1
+            closure = (self.q - p3) / self.K_N if np.isfinite(self.K_N) else 0.0
+            out.append(-self.q * self.H / self.Mc + integral / self.Mc - closure)
+        return np.array(out)
+
+
+def _selfcheck_joint(failures):
+    q, H, Mc, kappa = 1e4, 1.0, constrained_modulus(1e7, 0.25), 1e-9
+    cv = kappa * Mc
+    # R -> 0: Terzaghi
+    col = JointColumn(q, H, 0.5, Mc, kappa, 1e-6)
+    zz = np.array([0.1, 0.25, 0.5, 0.75, 1.0])
+    t = 0.1 * H * H / cv
+    pj = np.array([col.pressure(z, t)[0] for z in zz])
+    pt = terzaghi_pressure(zz, t, q, H, Mc, kappa)
+    _check(np.max(np.abs(pj - pt)) < 1e-5 * q, "joint column with R -> 0 is Terzaghi", failures)
+    # R = 1e9 (R kappa = 1 m): the PDE, flux continuity, the jump condition, mass balance
+    R = 1e9
+    col = JointColumn(q, H, 0.5, Mc, kappa, R)
+    t, dt, dz = 0.05 * H * H / cv, 1e-5 * H * H / cv, 1e-4
+    for z in (0.2, 0.8):
+        p = lambda zv, tv: col.pressure(zv, tv)[0]
+        res = (p(z, t + dt) - p(z, t - dt)) / (2 * dt) - cv * (p(z + dz, t) - 2 * p(z, t) + p(z - dz, t)) / dz ** 2
+        _check(abs(res) < 1e-4 * q * cv / H ** 2, f"joint column: dp/dt = c p_zz at z = {z}", failures)
+    p = lambda zv, side="below": col.pressure(zv, t, side)[0]
+    fa = kappa * (3 * p(0.5, "above") - 4 * p(0.5 - dz) + p(0.5 - 2 * dz)) / (2 * dz)
+    fb = kappa * (-3 * p(0.5, "below") + 4 * p(0.5 + dz) - p(0.5 + 2 * dz)) / (2 * dz)
+    f = col.flux(t)[0]
+    _check(abs(fa - f) < 1e-6 * abs(f) and abs(fb - f) < 1e-6 * abs(f),
+           "joint column: flux continuous across the joint", failures)
+    _check(abs(col.jump(t)[0] - R * f) < 1e-9 * q, "joint column: jump = R f", failures)
+    _check(abs(p(0.0)) < 1e-9 * q, "joint column: p = 0 at the drained top", failures)
+    # mass balance: d/dt int p dz = -c p_z(0), so ds/dt = -kappa p_z(0) (without closure)
+    s = JointColumn(q, H, 0.5, Mc, kappa, R).settlement([t - dt, t + dt])
+    top_flux = kappa * (-3 * p(0.0) + 4 * p(dz) - p(2 * dz)) / (2 * dz)
+    _check(abs((s[1] - s[0]) / (2 * dt) + top_flux) < 1e-5 * abs(top_flux),
+           "joint column: settlement rate = water out of the top", failures)
+    p_early = np.array([col.pressure(z, 1e-6 * H * H / cv)[0] for z in (0.3, 0.7, 1.0)])
+    _check(np.max(np.abs(p_early - q)) < 1e-3 * q, "joint column: p(z, 0+) = q", failures)
+    _check(abs(col.settlement(1e3 * H * H / cv)[0] + q * H / Mc) < 1e-9 * q * H / Mc,
+           "joint column: final settlement q H / M_c", failures)
+
+
+# --------------------------------------------------------------------------------------------
 # self-check
 # --------------------------------------------------------------------------------------------
 
@@ -518,6 +658,7 @@ def _selfcheck():
            "Mandel general: sum sin cos/den at t=0 = (nu_u-nu)/(2(1-nu_u))", failures)
     print("Mandel centre pressure p/p0 at c t/a^2 =", np.round(m.time_factor(tt), 3), ":",
           np.round(pc / m.p0, 4))
+    _selfcheck_joint(failures)
     if failures:
         print(f"{len(failures)} self-check(s) FAILED")
         raise SystemExit(1)
