@@ -1,0 +1,249 @@
+"""A study's outputs: study.csv (one row per run), study.md (the table to choose from),
+work_precision.png (error against wall time and against unknowns, one panel pair per
+quantity)."""
+
+import csv
+import datetime
+import math
+import os
+import platform
+
+import numpy as np
+
+FIXED = ["path", "kind", "integrator", "solver", "ranks", "index", "mesh_size_factor", "dt",
+         "dt_initial", "varied", "parameter", "parameter_value", "status", "unknowns"]
+COST = ["steps", "rejected", "wall_total_s", "wall_steps_s", "wall_per_step_s", "newton",
+        "krylov", "peak_memory_mb_per_rank"]
+
+
+def write(st, rows, summary, out, plots=True):
+    write_csv(st, rows, os.path.join(out, "study.csv"))
+    with open(os.path.join(out, "orders.csv"), "w", newline="") as f:
+        cols = ["path", "kind", "parameter", "quantity", "runs", "error_slope",
+                "error_slope_finest_pair", "observed_order", "slope_vs_unknowns", "line"]
+        w = csv.DictWriter(f, fieldnames=cols, extrasaction="ignore")
+        w.writeheader()
+        for o in summary["orders"]:
+            w.writerow({c: _fmt(o[c]) for c in cols})
+    write_md(st, rows, summary, os.path.join(out, "study.md"))
+    if plots:
+        plot(st, rows, summary, os.path.join(out, "work_precision.png"))
+
+
+def write_csv(st, rows, path):
+    unk = sorted({k for r in rows for k in r if k.startswith("unknowns_")})
+    qcols = [f"{q}_{s}" for q in st.quantities for s in ("value", "error", "change_from_finest")]
+    cols = FIXED + unk + COST + qcols + ["key"]
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=cols, extrasaction="ignore")
+        w.writeheader()
+        for r in rows:
+            w.writerow({c: _fmt(r.get(c, "")) for c in cols})
+
+
+def _fmt(v):
+    if isinstance(v, float):
+        return "" if math.isnan(v) else f"{v:.10g}"
+    return v
+
+
+def settings(r):
+    """The settings of a run in words."""
+    s = [f"mesh factor {r['mesh_size_factor']:g}"]
+    if r["kind"] == "adaptive":
+        s.append(f"adaptive (dt0 {r['dt_initial']:g} s)")
+    else:
+        s.append(f"dt {r['dt']:g} s")
+    if r["varied"]:
+        s.append(r["varied"])
+    s.append(r["integrator"])
+    s.append(r["solver"])
+    s.append(f"{r['ranks']} rank{'s' if r['ranks'] > 1 else ''}")
+    return ", ".join(s)
+
+
+def machine():
+    cpu = "unknown CPU"
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    return f"{cpu}, {os.cpu_count()} cores, {platform.system()} {platform.release()}"
+
+
+def _pct(x):
+    if x is None or not np.isfinite(x):
+        return "-"
+    return f"{100 * x:.3g} %"
+
+
+def write_md(st, rows, summary, path):
+    ok = [r for r in rows if r["status"] == "ok"]
+    L = [f"# Study {st.name}: {st.title}", ""]
+    if st.description:
+        L += [st.description.strip(), ""]
+    L += [f"Study file `{os.path.relpath(st.file, os.path.dirname(os.path.dirname(path)) + '/..')}`; "
+          f"{len(rows)} runs ({len(ok)} finished); written "
+          f"{datetime.datetime.now().strftime('%Y-%m-%d %H:%M')} on {machine()}. Wall times are "
+          "those measured when each run was made (the run cache keeps them); each is the whole "
+          "run (mesh generation, set-up, steps, output) as the user waits for it.", ""]
+    L += ["## Quantities and references", "",
+          "| quantity | measured | error measure | reference | reference's own estimated error |",
+          "|---|---|---|---|---|"]
+    refs = summary["references"]
+    for q in st.quantities.values():
+        at = ("at the end" if q.at == "end" else
+              f"where {q.at['column']} reaches {q.at['value']:g}" if isinstance(q.at, dict) else
+              "at t = " + ", ".join(f"{t:g}" for t in q.at) + " s")
+        cname = (" + ".join(f"{w:g} {c}" for c, w in q.column.items()) if isinstance(q.column, dict)
+                 else q.column)
+        meas = f"`{cname}` of {q.file} {at}" + (f", minus {q.subtract.replace('_', ' ')}" if q.subtract else "")
+        err = f"{q.norm} of the difference, relative ({q.unit})"
+        if q.reference["kind"] == "closed_form":
+            params = ", ".join(f"{k} = {v}" for k, v in q.reference.items() if k not in ("kind", "closed_form"))
+            ref, est = f"closed form `{q.reference['closed_form']}` ({params})", "exact (series to 1e-12)"
+        else:
+            info = refs.get(q.name, {})
+            ref = info.get("method", q.reference["kind"])
+            v = np.atleast_1d(info.get("value", [np.nan]))
+            ref += f"; value {', '.join(f'{x:.6g}' for x in v)}"
+            e = np.atleast_1d(info.get("estimated_error", [np.nan]))
+            sc = float(np.max(np.abs(v))) if q.scale == "reference" else q.scale
+            est = _pct(float(np.max(e)) / sc) if sc else "-"
+        L.append(f"| **{q.name}**: {q.label} | {meas} | {err} | {ref} | {est} |")
+    L += ["", "## What an accuracy costs", "",
+          "The cheapest run found (least total wall time) whose error is at most the target; "
+          "\"not reached\" gives the best error found.", ""]
+    L += ["| quantity | target | cheapest settings | unknowns | steps | wall time | per step | error |",
+          "|---|---|---|---|---|---|---|---|"]
+    for q in st.quantities.values():
+        errs = [(r, r[f"{q.name}_error"]) for r in ok if np.isfinite(r[f"{q.name}_error"])]
+        est = None
+        if q.name in refs and q.reference["kind"] in ("richardson", "study"):
+            v = np.atleast_1d(refs[q.name]["value"])
+            sc = float(np.max(np.abs(v))) if q.scale == "reference" else q.scale
+            est = float(np.max(np.atleast_1d(refs[q.name]["estimated_error"]))) / sc
+        for tgt in st.targets:
+            good = [r for r, e in errs if e <= tgt]
+            note = " (below the reference's own error estimate)" if est is not None and tgt < est else ""
+            if good:
+                b = min(good, key=lambda r: r["wall_total_s"])
+                L.append(f"| {q.name} | {_pct(tgt)} | {settings(b)}{note} | {b['unknowns']} | "
+                         f"{b['steps']} | {b['wall_total_s']:.2f} s | {b['wall_per_step_s']:.3g} s | "
+                         f"{_pct(b[f'{q.name}_error'])} |")
+            else:
+                if errs:
+                    b, e = min(errs, key=lambda x: x[1])
+                    L.append(f"| {q.name} | {_pct(tgt)} | not reached{note}; best {_pct(e)}: "
+                             f"{settings(b)} | {b['unknowns']} | {b['steps']} | "
+                             f"{b['wall_total_s']:.2f} s | {b['wall_per_step_s']:.3g} s | {_pct(e)} |")
+                else:
+                    L.append(f"| {q.name} | {_pct(tgt)} | no run measured it | | | | | |")
+    L += ["", "## Observed orders", "",
+          "Per refinement path: *error slope* = least-squares slope of log(error) against "
+          "log(parameter) (mesh size factor, proportional to h, or dt), and of the finest pair; "
+          "*observed order* = from the changes between the last three runs, "
+          "log(|Q1-Q2|/|Q2-Q3|)/log(ratio), which needs no reference and is blind to what the "
+          "path keeps fixed (the time error on a space path); *vs unknowns* = slope of the "
+          "error against the number of unknowns (in 2D, -1 per order 2 in h).", "",
+          "| path | parameter | quantity | runs | error slope (fit / finest pair) | observed order | vs unknowns |",
+          "|---|---|---|---|---|---|---|"]
+    for o in summary["orders"]:
+        f = lambda x: "-" if x is None or not np.isfinite(x) else f"{x:.2f}"
+        L.append(f"| {o['line']} | {o['parameter']} | {o['quantity']} | {o['runs']} | "
+                 f"{f(o['error_slope'])} / {f(o['error_slope_finest_pair'])} | "
+                 f"{f(o['observed_order'])} | {f(o['slope_vs_unknowns'])} |")
+    tol = [r for r in rows if r["kind"] == "tolerance"]
+    if tol:
+        L += ["", "## Tolerance paths: change from the tightest run", "",
+              "Each path varies one solver tolerance and keeps the discretisation, so the "
+              "change from its tightest run is the solver's own error; the error against the "
+              "reference adds the discretisation error.", "",
+              "| path | setting | wall [s] | Newton | Krylov | "
+              + " | ".join(f"{q} change / error" for q in st.quantities) + " |",
+              "|---|---|---|---|---|" + "---|" * len(st.quantities)]
+        for r in tol:
+            if r["status"] != "ok":
+                L.append(f"| {r['path']} | {r['varied']} ({r['solver']}) | {r['status']} |"
+                         + " |" * (2 + len(st.quantities)))
+                continue
+            L.append(f"| {r['path']} | {r['varied']} ({r['solver']}) | {r['wall_total_s']:.2f} | "
+                     f"{r['newton']} | {r['krylov']} | "
+                     + " | ".join(f"{_pct(r[f'{q}_change_from_finest'])} / {_pct(r[f'{q}_error'])}"
+                                  for q in st.quantities) + " |")
+    L += ["", "## Runs", "", "| path | settings | unknowns | steps | wall [s] | per step [s] | "
+          "Newton | Krylov | peak MB/rank | " + " | ".join(f"{q} error" for q in st.quantities) + " |",
+          "|---|---|---|---|---|---|---|---|---|" + "---|" * len(st.quantities)]
+    for r in rows:
+        if r["status"] != "ok":
+            L.append(f"| {r['path']} | {settings(r)} | {r['status']} |" + " |" * (7 + len(st.quantities)))
+            continue
+        L.append(f"| {r['path']} | {settings(r)} | {r['unknowns']} | {r['steps']} | "
+                 f"{r['wall_total_s']:.2f} | {r['wall_per_step_s']:.3g} | {r['newton']} | "
+                 f"{r['krylov']} | {r['peak_memory_mb_per_rank']:.0f} | "
+                 + " | ".join(_pct(r[f"{q}_error"]) for q in st.quantities) + " |")
+    L.append("")
+    with open(path, "w") as f:
+        f.write("\n".join(L))
+
+
+def _label(r):
+    if r["parameter"] == "mesh_size_factor":
+        return f"f{r['mesh_size_factor']:g}" + (f"/dt{r['dt']:g}" if r["kind"] == "both" else "")
+    if r["parameter"] == "dt":
+        return f"dt{r['dt']:g}"
+    return f"{r['parameter_value']:g}"
+
+
+def plot(st, rows, summary, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    qs = list(st.quantities.values())
+    fig, axes = plt.subplots(len(qs), 2, figsize=(13, 4.6 * len(qs)), squeeze=False)
+    lines = []
+    for r in rows:
+        if r["line"] not in lines:
+            lines.append(r["line"])
+    order = {(o["line"], o["quantity"]): o for o in summary["orders"]}
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for qi, q in enumerate(qs):
+        a1, a2 = axes[qi]
+        for li, ln in enumerate(lines):
+            rs = [r for r in rows if r["line"] == ln and r["status"] == "ok"
+                  and np.isfinite(r[f"{q.name}_error"]) and r[f"{q.name}_error"] > 0]
+            if not rs:
+                continue
+            c = colors[li % len(colors)]
+            e = [r[f"{q.name}_error"] for r in rs]
+            a1.loglog([r["wall_total_s"] for r in rs], e, "o-", color=c, label=ln)
+            for r in rs:
+                a1.annotate(_label(r), (r["wall_total_s"], r[f"{q.name}_error"]), fontsize=7,
+                            xytext=(3, 3), textcoords="offset points", color=c)
+            o = order.get((ln, q.name), {})
+            so = o.get("observed_order", float("nan"))
+            sl = o.get("error_slope", float("nan"))
+            a2.loglog([r["unknowns"] for r in rs], e, "o-", color=c,
+                      label=f"{ln}: error slope vs {rs[0]['parameter']} "
+                            f"{sl:.2f}, observed order {so:.2f}" if np.isfinite(so) else
+                            f"{ln}: error slope vs {rs[0]['parameter']} {sl:.2f}")
+        for tgt in st.targets:
+            for ax in (a1, a2):
+                ax.axhline(tgt, color="0.8", lw=0.8, ls=":", zorder=0)
+        a1.set_xlabel("wall time of the run [s]")
+        a1.set_ylabel(f"error of {q.name} ({q.unit})")
+        a1.set_title(f"{q.label}", fontsize=10)
+        a2.set_xlabel("unknowns")
+        a2.set_title("error against unknowns (orders in the legend)", fontsize=10)
+        a1.grid(True, which="both", alpha=0.3)
+        a2.grid(True, which="both", alpha=0.3)
+        a1.legend(fontsize=7)
+        a2.legend(fontsize=7)
+    fig.suptitle(f"study {st.name}: {st.title}", fontsize=12)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
