@@ -86,7 +86,9 @@ def write_md(st, rows, summary, path):
     L = [f"# Study {st.name}: {st.title}", ""]
     if st.description:
         L += [st.description.strip(), ""]
-    L += [f"Study file `{os.path.relpath(st.file, os.path.dirname(os.path.dirname(path)) + '/..')}`; "
+    from .spec import TOP
+    rel = os.path.relpath(st.file, TOP)
+    L += [f"Study file `{st.file if rel.startswith('..') else rel}`; "
           f"{len(rows)} runs ({len(ok)} finished); written "
           f"{datetime.datetime.now().strftime('%Y-%m-%d %H:%M')} on {machine()}. Wall times are "
           "those measured when each run was made (the run cache keeps them); each is the whole "
@@ -203,6 +205,7 @@ def plot(st, rows, summary, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    import matplotlib.ticker  # noqa: F401
     qs = list(st.quantities.values())
     fig, axes = plt.subplots(len(qs), 2, figsize=(13, 4.6 * len(qs)), squeeze=False)
     lines = []
@@ -219,10 +222,10 @@ def plot(st, rows, summary, path):
             if not rs:
                 continue
             c = colors[li % len(colors)]
-            e = [r[f"{q.name}_error"] for r in rs]
+            e = [100.0 * r[f"{q.name}_error"] for r in rs]
             a1.loglog([r["wall_total_s"] for r in rs], e, "o-", color=c, label=ln)
             for r in rs:
-                a1.annotate(_label(r), (r["wall_total_s"], r[f"{q.name}_error"]), fontsize=7,
+                a1.annotate(_label(r), (r["wall_total_s"], 100.0 * r[f"{q.name}_error"]), fontsize=7,
                             xytext=(3, 3), textcoords="offset points", color=c)
             o = order.get((ln, q.name), {})
             so = o.get("observed_order", float("nan"))
@@ -233,9 +236,10 @@ def plot(st, rows, summary, path):
                             f"{ln}: error slope vs {rs[0]['parameter']} {sl:.2f}")
         for tgt in st.targets:
             for ax in (a1, a2):
-                ax.axhline(tgt, color="0.8", lw=0.8, ls=":", zorder=0)
+                ax.axhline(100.0 * tgt, color="0.8", lw=0.8, ls=":", zorder=0)
         a1.set_xlabel("wall time of the run [s]")
-        a1.set_ylabel(f"error of {q.name} ({q.unit})")
+        a1.set_ylabel(f"error of {q.name} [{q.unit}]")
+        a1.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         a1.set_title(f"{q.label}", fontsize=10)
         a2.set_xlabel("unknowns")
         a2.set_title("error against unknowns (orders in the legend)", fontsize=10)

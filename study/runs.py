@@ -99,7 +99,7 @@ def plan(study, exe, cache):
                         r.parameter = path.parameter
                         r.value = (pt[path.parameter] if path.parameter in ("mesh_size_factor", "dt")
                                    else float(pt["vary"][path.parameter]))
-                        r.line = f"{pname} | {integ} | {solver} | {ranks} rank{'s' if ranks > 1 else ''}"
+                        r.line = f"{pname}, {integ}, {solver}, {ranks} rank{'s' if ranks > 1 else ''}"
                         r.args, r.tables = arguments(study, path, integ, solver, pt)
                         r.opts = options_of(r.args)
                         r.key = run_key(r.args, r.tables, ranks, ident)

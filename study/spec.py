@@ -301,7 +301,7 @@ def _quantity(path, s, name, t):
     q.scale = t.get("scale", "reference")
     if q.scale != "reference":
         q.scale = _number(path, k + ".scale", q.scale, positive=True)
-    q.unit = t.get("unit", "of |reference|" if q.scale == "reference" else f"of {q.scale:g}")
+    q.unit = t.get("unit", "% of |reference|" if q.scale == "reference" else f"% of {q.scale:g}")
     ref = t.get("reference")
     if not isinstance(ref, dict):
         raise _err(path, k + ".reference", "a table with one of " + ", ".join(REFERENCE_KINDS), ref)
