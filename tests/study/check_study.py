@@ -94,8 +94,8 @@ def perturbation():
     exe = sys.executable  # any file: the runs are written by hand, the binary only keys them
     plan = runs.plan(st, exe, cache)
     q, H, Mc, kappa = 1e4, 1.0, A.constrained_modulus(1e7, 0.25), 1e-12 / 1e-3
-    at = np.array([2.0, 4.0, 6.0, 8.0, 10.0])
-    rel = np.array([0.01, -0.02, 0.03, 0.0, -0.01])  # relative perturbations per time
+    at = np.array(st.quantities["p_exact"].at)  # the study file's times
+    rel = np.array([0.01, -0.02, 0.03, 0.0, -0.01, 0.02])[:len(at)]  # relative, per time
     ds = 3e-6  # absolute perturbation of the final settlement [m]
     expected = {}
     for r in plan:
