@@ -33,15 +33,17 @@ struct InterfacePointState {
   bool flow = false;
   double interface_pressure = 0.0;         ///< p3 [Pa]
   double aperture = 0.0;                   ///< h = D0 + o [m]
-  double aperture_rate = 0.0;              ///< dh/dt [m/s] (backward Euler)
+  double aperture_rate = 0.0;              ///< dh/dt [m/s]
   double longitudinal_flux[3] = {0, 0, 0}; ///< q_l, global [m2/s]
   double transversal_flux1 = 0.0;          ///< f_1 = T_1 (p1 - p3), side 1 -> inner [m/s]
   double transversal_flux2 = 0.0;          ///< f_2 = T_2 (p3 - p2), inner -> side 2 [m/s]
 };
 
-/// Rates for an evaluation: local vector of d/dt of the unknowns and the step dt (backward
-/// Euler: the opening rate is (o(g) - o(g - dt dg/dt)) / dt). `rate` may be null (no flow
-/// terms are then evaluated: mechanics only, e.g. for committing history).
+/// Rates for an evaluation: local vector of d/dt of the unknowns (the integrator's) and dt, the
+/// time since the last accepted state: the opening rate is (o(g) - o(g - dt dg/dt)) / dt (the
+/// difference of the openings under backward Euler; see InterfaceAssembly::loop for BDF2).
+/// `rate` may be null (no flow terms are then evaluated: mechanics only, e.g. for committing
+/// history).
 struct InterfaceRates {
   Vec rate = nullptr;
   double dt = 0.0;

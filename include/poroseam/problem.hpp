@@ -23,9 +23,21 @@ struct ResidualMode {
   /// Include applied tractions and fluxes. Without them the residual at a vertex is the
   /// force (and water rate) the surroundings exert on the body there: reactions and outflows.
   bool include_loads = true;
-  /// The step being solved (backward Euler), for rates of non-linear quantities such as
-  /// the interface opening; 0 when no step is involved.
+  /// Time since the last accepted state (the step; for BDF's start-up half step, half of
+  /// it), for rates of non-linear quantities such as the interface opening (see
+  /// InterfaceRates); 0 when no step is involved.
   double dt = 0.0;
+};
+
+/// The integrator's difference formula applied to prescribed values: rate = now * value(t) +
+/// sum_k weight[k] * (entry of state[k]), state[k] being local vectors of the earlier states
+/// the integrator differentiates through (time_integration.hpp). Backward Euler: now = 1/dt,
+/// weight[0] = -1/dt, state[0] the last accepted state.
+struct RateStencil {
+  double now = 0.0;
+  int count = 0;
+  double weight[2] = {0.0, 0.0};
+  Vec state[2] = {nullptr, nullptr};
 };
 
 class Problem {
@@ -37,17 +49,19 @@ public:
   /// Local vector with the initial state: zero displacement, hydrostatic (or zero) pressure.
   PetscErrorCode initialState(Vec local) const;
 
-  /// Writes the prescribed values at time t into the constrained entries of `local`, and
-  /// their rates (value(t) - previous) / dt into `local_rate` (if given).
-  PetscErrorCode insertBoundaryValues(double t, double dt, Vec previous, Vec local,
-                                      Vec local_rate) const;
+  /// Writes the prescribed values at time t into the constrained entries of `local`.
+  PetscErrorCode insertBoundaryValues(double t, Vec local) const;
+  /// Writes the rates of the prescribed values at time t, by `stencil`, into the constrained
+  /// entries of `local_rate`.
+  PetscErrorCode insertBoundaryRates(double t, const RateStencil &stencil, Vec local_rate) const;
 
   /// F(x, xdot) assembled into the local vector f (zeroed here).
   PetscErrorCode residual(double t, Vec local, Vec local_rate, const ResidualMode &mode,
                           Vec f) const;
-  /// dF/dx + shift dF/dxdot assembled into J (zeroed here), with mass_scale as in residual.
-  PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate, double mass_scale,
-                          Mat J) const;
+  /// dF/dx + shift dF/dxdot assembled into J (zeroed here), with mode.mass_scale and mode.dt
+  /// as in residual (mode.include_loads does not matter: loads do not depend on x).
+  PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate,
+                          const ResidualMode &mode, Mat J) const;
 
   /// Profiling: residual and Jacobian, bulk and interface terms, become -log_view events.
   void setLogEvents(const LogEvents &events) { events_ = events; }

@@ -46,6 +46,8 @@ struct FlowPoint {
   double gravity_t[3];   ///< tangential gravity
   double conductivity = 0.0, d_conductivity = 0.0;
   bool opening_active = false; ///< d o / d g_N = 1
+  /// The same at the back-dated gap g_N - dt dg_N/dt of the storage rate (see loop()).
+  bool back_opening_active = false;
 };
 
 namespace {
@@ -201,15 +203,28 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         // Total normal pressure p'_N + p3 on both faces (friction uses p'_N only).
         for (int d = 0; d < dim_; ++d)
           st.traction[d] -= st.interface_pressure * cell.frame[0][d];
-        // Aperture, and its backward-Euler rate from the gap of the last step.
+        // Aperture and its rate. The opening o = max(0, g_N - c) is not differentiable where
+        // the gap closes, so its rate is the secant over the step of the integrator's own gap
+        // rate: with dt the time since the last accepted state and g_b = g_N - dt dg_N/dt,
+        //   do/dt = (o(g_N) - o(g_b)) / dt = dg_N/dt * (mean of do/dg over [g_b, g_N]).
+        // Backward Euler: g_b is the last accepted gap, so this is the difference of the
+        // openings and the gap's water balance telescopes exactly. BDF2 (or any integrator
+        // whose gap rate is second order): g_b = g_N(t - dt) + O(dt^2), and wherever the point
+        // stays open (o linear in g) the rate is exactly the integrator's dg_N/dt, the storage
+        // term its own second-order derivative of h; it stays zero where the point stays
+        // closed. Only a step in which the point opens or closes takes a secant, where the
+        // opening has a kink in time and no method keeps its order. The BDF formula on h itself
+        // would need the openings of the last two states at every point, and the chain rule
+        // do/dg dg/dt would store water (g_N - g_prev instead of o) in the step that opens.
         double gn_rate = 0.0;
         for (int d = 0; d < dim_; ++d)
           gn_rate += cell.frame[0][d] * gap_rate[d];
-        const double previous_opening =
+        const double back_opening =
             physics::mechanicalOpening(params, initial_[h], st.gap_normal - rates.dt * gn_rate);
         fp.opening_active = st.opening > 0.0;
+        fp.back_opening_active = back_opening > 0.0;
         st.aperture = in.aperture0 + st.opening;
-        st.aperture_rate = rates.dt > 0.0 ? (st.opening - previous_opening) / rates.dt : 0.0;
+        st.aperture_rate = rates.dt > 0.0 ? (st.opening - back_opening) / rates.dt : 0.0;
         const auto c = physics::cubicLawConductivity(st.aperture, scene_->fluid_viscosity);
         fp.conductivity = c.value;
         fp.d_conductivity = c.d_aperture;
@@ -345,6 +360,12 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                      dq_dh[d] = -fp.d_conductivity *
                                 (fp.grad_p3[d] - scene_->fluid_density * fp.gravity_t[d]);
                    const double active = fp.opening_active ? 1.0 : 0.0;
+                   // d(do/dt)/dg_N with dg_b/dg_N = 1 - dt shift (the gap rate moves with the
+                   // gap by shift): (active - back) / dt + shift back. Backward Euler
+                   // (dt shift = 1): shift active.
+                   const double back = fp.back_opening_active ? 1.0 : 0.0;
+                   const double d_storage =
+                       rates.dt > 0.0 ? (active - back) / rates.dt + shift * back : 0.0;
                    for (int a = 0; a < nf; ++a)
                      for (int b = 0; b < nf; ++b) {
                        const double pp = phi[a] * phi[b];
@@ -375,7 +396,7 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                        }
                        // Storage dh/dt and conductivity through the opening: d/du_2 = +, d/du_1 =
                        // -.
-                       const double du = ws * active * (shift * pp - gq * phi[b]);
+                       const double du = ws * (d_storage * pp - active * gq * phi[b]);
                        for (int j = 0; j < dim_; ++j) {
                          add(cell.p3[a], cell.u2[b] + j, du * e1[j]);
                          add(cell.p3[a], cell.u1[b] + j, -du * e1[j]);

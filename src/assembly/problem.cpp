@@ -301,23 +301,38 @@ PetscErrorCode Problem::initialState(Vec local) const
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Problem::insertBoundaryValues(double t, double dt, Vec previous, Vec local,
-                                             Vec local_rate) const
+PetscErrorCode Problem::insertBoundaryValues(double t, Vec local) const
 {
-  PetscScalar *u, *rate = nullptr;
-  const PetscScalar *prev;
+  PetscScalar *u;
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(local, &u));
-  PetscCall(VecGetArrayRead(previous, &prev));
-  if (local_rate) PetscCall(VecGetArray(local_rate, &rate));
   for (const auto &c : constrained_) {
     const auto &bc = scene_->conditions[c.condition];
     u[c.offset] = bc.value[0] * bc.time.factor(t);
-    if (rate) rate[c.offset] = dt > 0.0 ? (u[c.offset] - prev[c.offset]) / dt : 0.0;
   }
-  if (local_rate) PetscCall(VecRestoreArray(local_rate, &rate));
-  PetscCall(VecRestoreArrayRead(previous, &prev));
   PetscCall(VecRestoreArray(local, &u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::insertBoundaryRates(double t, const RateStencil &stencil,
+                                            Vec local_rate) const
+{
+  PetscScalar *rate;
+  const PetscScalar *state[2] = {nullptr, nullptr};
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(local_rate, &rate));
+  for (int k = 0; k < stencil.count; ++k)
+    PetscCall(VecGetArrayRead(stencil.state[k], &state[k]));
+  for (const auto &c : constrained_) {
+    const auto &bc = scene_->conditions[c.condition];
+    double r = stencil.now * bc.value[0] * bc.time.factor(t);
+    for (int k = 0; k < stencil.count; ++k)
+      r += stencil.weight[k] * state[k][c.offset];
+    rate[c.offset] = r;
+  }
+  for (int k = 0; k < stencil.count; ++k)
+    PetscCall(VecRestoreArrayRead(stencil.state[k], &state[k]));
+  PetscCall(VecRestoreArray(local_rate, &rate));
   PetscFunctionReturn(0);
 }
 
@@ -429,8 +444,9 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
 }
 
 PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_rate,
-                                 double mass_scale, Mat J) const
+                                 const ResidualMode &mode, Mat J) const
 {
+  const double mass_scale = mode.mass_scale;
   Vec coords;
   const PetscScalar *ua, *ra, *ca;
   PetscFunctionBeginUser;
@@ -455,8 +471,7 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
   PetscCall(VecRestoreArrayRead(local_rate, &ra));
   PetscCall(VecRestoreArrayRead(local, &ua));
   PetscCall(beginLogEvent(events_.interface_jacobian));
-  PetscCall(interfaces_.jacobian(local, InterfaceRates{local_rate, shift > 0.0 ? 1.0 / shift : 0.0},
-                                 shift, mass_scale, J));
+  PetscCall(interfaces_.jacobian(local, InterfaceRates{local_rate, mode.dt}, shift, mass_scale, J));
   PetscCall(endLogEvent(events_.interface_jacobian));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));

@@ -159,7 +159,7 @@ PetscErrorCode compareJacobian(int dim, Blocks *blocks)
   PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
   PetscCall(VecWAXPY(rate, -1.0, previous, local));
   PetscCall(VecScale(rate, 1.0 / dt));
-  PetscCall(problem.jacobian(t, 1.0 / dt, local, rate, -dt, J));
+  PetscCall(problem.jacobian(t, 1.0 / dt, local, rate, ResidualMode{-dt, true, dt}, J));
   Mat Jd;
   PetscCall(MatConvert(J, MATDENSE, MAT_INITIAL_MATRIX, &Jd));
   const PetscScalar *jd;

@@ -131,7 +131,7 @@ PetscErrorCode compare(const Case &c, double *relative_error, int *states)
   Mat J, Jd;
   PetscCall(DMCreateMatrix(dm, &J));
   PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
-  PetscCall(problem.jacobian(0.0, 0.0, local, rate, 1.0, J));
+  PetscCall(problem.jacobian(0.0, 0.0, local, rate, ResidualMode{1.0, true}, J));
   PetscCall(MatConvert(J, MATDENSE, MAT_INITIAL_MATRIX, &Jd));
   const PetscScalar *jd;
   PetscCall(MatDenseGetArrayRead(Jd, &jd));
