@@ -5,13 +5,14 @@
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/log_events.hpp"
-#include "poroseam/newton_forcing.hpp"
 #include "poroseam/mesh.hpp"
+#include "poroseam/newton_forcing.hpp"
 #include "poroseam/nullspace.hpp"
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
 #include "poroseam/solver_preset.hpp"
+#include "poroseam/time_integration.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
 #include <cmath>
@@ -39,7 +40,10 @@ struct Run {
   FieldWriter fields;
   InterfaceWriter interface_fields;
   TS ts = nullptr;
+  TimeIntegration time;   ///< integrator checks, rates of prescribed values, error control
   Vec previous = nullptr; ///< local state of the last accepted step (boundary values included)
+  /// While set (postStep), the residual copies the integrator's local rate here.
+  Vec capture_rate = nullptr;
   Vec initial = nullptr;  ///< local initial state
   std::vector<BoundaryDofs> boundary_dofs;
   /// Per interface: its prescribed interface-pressure dofs, where water leaves along it.
@@ -77,19 +81,30 @@ PetscErrorCode currentDt(Run &run, double *dt)
 PetscErrorCode boundaryLocal(DM, PetscReal t, Vec local, Vec local_rate, void *ctx)
 {
   Run &run = *static_cast<Run *>(ctx);
-  double dt;
+  RateStencil stencil;
+  double since;
   PetscFunctionBeginUser;
-  PetscCall(currentDt(run, &dt));
-  PetscCall(run.problem.insertBoundaryValues(t, dt, run.previous, local, local_rate));
+  PetscCall(run.problem.insertBoundaryValues(t, local));
+  if (!local_rate) PetscFunctionReturn(0);
+  // PETSc differentiates the unknowns only: prescribed values get the integrator's formula.
+  PetscCall(run.time.stencil(run.ts, t, run.previous, &stencil, &since));
+  PetscCall(run.problem.insertBoundaryRates(t, stencil, local_rate));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f, void *ctx)
 {
   Run &run = *static_cast<Run *>(ctx);
-  double dt;
+  double dt, since;
+  RateStencil stencil;
   PetscFunctionBeginUser;
   PetscCall(currentDt(run, &dt));
+  PetscCall(run.time.stencil(run.ts, t, run.previous, &stencil, &since));
+  if (run.capture_rate) {
+    PetscCall(VecCopy(local_rate, run.capture_rate));
+    PetscCall(VecSet(f, 0.0));
+    PetscFunctionReturn(0);
+  }
   run.attempted_dt = dt;
   run.stage_time = t;
   if (run.fail_dt_above > 0.0 && dt > run.fail_dt_above) {
@@ -98,8 +113,10 @@ PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f,
     PetscCall(TSGetSNES(run.ts, &snes));
     PetscCall(SNESSetFunctionDomainError(snes));
   }
+  // The mass balance scaled by the step (a constant factor per step: rows in force units);
+  // rates of non-linear quantities over the time since the last accepted state.
   const double mass_scale = -dt * run.problem.massBalanceScale();
-  PetscCall(run.problem.residual(t, local, local_rate, ResidualMode{mass_scale, true, dt}, f));
+  PetscCall(run.problem.residual(t, local, local_rate, ResidualMode{mass_scale, true, since}, f));
   PetscFunctionReturn(0);
 }
 
@@ -107,14 +124,17 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
                               Mat P, void *ctx)
 {
   Run &run = *static_cast<Run *>(ctx);
-  double dt;
+  double dt, since;
+  RateStencil stencil;
   PetscFunctionBeginUser;
   PetscCall(currentDt(run, &dt));
+  PetscCall(run.time.stencil(run.ts, t, run.previous, &stencil, &since));
   // The first assembly also sets up the matrix's communication: part of the set-up cost.
   const bool first = !run.jacobian_assembled;
   if (first) PetscCall(beginLogEvent(run.events.first_jacobian));
-  PetscCall(
-      run.problem.jacobian(t, shift, local, local_rate, -dt * run.problem.massBalanceScale(), P));
+  PetscCall(run.problem.jacobian(t, shift, local, local_rate,
+                                 ResidualMode{-dt * run.problem.massBalanceScale(), true, since},
+                                 P));
   if (run.jacobian_diagonal) PetscCall(MatGetDiagonal(P, run.jacobian_diagonal));
   if (first) PetscCall(endLogEvent(run.events.first_jacobian));
   run.jacobian_assembled = true;
@@ -298,8 +318,7 @@ PetscErrorCode forceLevel(Run &run, Vec X, double *level)
   PetscCall(DMGetLocalVector(run.dm, &zero));
   PetscCall(VecSet(zero, 0.0));
   PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, local));
-  PetscCall(run.problem.insertBoundaryValues(run.stage_time, run.attempted_dt, run.previous, local,
-                                             nullptr));
+  PetscCall(run.problem.insertBoundaryValues(run.stage_time, local));
   PetscCall(boundaryResultants(run, run.stage_time, run.attempted_dt, local, zero, resultants));
   PetscCall(interfaceResultants(run, local, InterfaceRates{zero, run.attempted_dt}, interface));
   PetscCall(DMRestoreLocalVector(run.dm, &zero));
@@ -503,9 +522,20 @@ PetscErrorCode postStep(TS ts)
   PetscCall(DMGetLocalVector(run.dm, &local));
   PetscCall(DMGetLocalVector(run.dm, &rate));
   PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, local));
-  PetscCall(run.problem.insertBoundaryValues(t, dt, run.previous, local, nullptr));
-  PetscCall(VecWAXPY(rate, -1.0, run.previous, local));
-  PetscCall(VecScale(rate, 1.0 / dt));
+  PetscCall(run.problem.insertBoundaryValues(t, local));
+  {
+    // The rates the outputs report (fluxes with storage, gap storage rate) are the
+    // integrator's own at the accepted state: its nonlinear function evaluated there (its
+    // shift and history are those of the step just taken) hands them to iFunctionLocal.
+    SNES snes;
+    Vec F;
+    PetscCall(TSGetSNES(ts, &snes));
+    PetscCall(DMGetGlobalVector(run.dm, &F));
+    run.capture_rate = rate;
+    PetscCall(SNESComputeFunction(snes, X, F));
+    run.capture_rate = nullptr;
+    PetscCall(DMRestoreGlobalVector(run.dm, &F));
+  }
 
   PetscInt snes_its, ksp_its, rejects;
   PetscCall(TSGetSNESIterations(ts, &snes_its));
@@ -522,11 +552,14 @@ PetscErrorCode postStep(TS ts)
                         run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)krylov,
                         rejected ? "  (cut back)" : "", wall));
   PetscCall(run.problem.commit(local)); // only accepted steps reach here
+  PetscCall(run.time.accept(t, run.previous, X));
   PetscCall(VecCopy(local, run.previous));
   PetscCall(DMRestoreLocalVector(run.dm, &rate));
   PetscCall(DMRestoreLocalVector(run.dm, &local));
-  // After a cut-back the step grows again, by 2 per accepted step, up to the nominal size.
-  if (dt < run.nominal_dt) PetscCall(TSSetTimeStep(ts, std::min(run.nominal_dt, 2.0 * dt)));
+  // Fixed steps: after a cut-back the step grows again, by 2 per accepted step, up to the
+  // nominal size. Adaptive steps: TSAdapt has chosen the next step.
+  if (!run.time.adaptive() && dt < run.nominal_dt)
+    PetscCall(TSSetTimeStep(ts, std::min(run.nominal_dt, 2.0 * dt)));
   run.step_start = MPI_Wtime();
   PetscFunctionReturn(0);
 }
@@ -659,15 +692,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(
       SNESSetTolerances(snes, PETSC_DEFAULT, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(registerVertexBlocksPC());
-  {
-    // Newton starts from the linear extrapolation of the last two accepted states (PETSc's
-    // theta-method predictor; after a cut-back it starts from the last state). Measured on the
-    // coarse 3D quarter caisson (24 steps, MUMPS): 102 -> 47 Newton iterations, the same time
-    // series to 2e-9. A user's -ts_theta_initial_guess_extrapolate false still wins.
-    PetscBool set;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-ts_theta_initial_guess_extrapolate", &set));
-    if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-ts_theta_initial_guess_extrapolate", "true"));
-  }
+  PetscCall(run.time.beforeOptions(run.ts));
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
   {
@@ -677,13 +702,17 @@ PetscErrorCode runSimulation(MPI_Comm comm)
     PetscCall(KSPGetTolerances(ksp, &rtol, nullptr, nullptr, nullptr));
     run.ksp_rtol = rtol;
   }
-  TSType type;
-  PetscCall(TSGetType(run.ts, &type));
-  PetscCheck(std::string(type) == TSBEULER, comm, PETSC_ERR_USER_INPUT,
-             "-ts_type %s: poroseam integrates in time with backward Euler (beuler) only", type);
   PetscCall(TSGetTimeStep(run.ts, &run.nominal_dt));
   PetscCheck(run.nominal_dt > 0.0, comm, PETSC_ERR_USER_INPUT, "-ts_dt %g: must be > 0",
              run.nominal_dt);
+  {
+    PetscReal t0;
+    PetscCall(TSGetTime(run.ts, &t0));
+    PetscCall(run.time.afterOptions(run.ts, run.dm, run.problem, t0, run.initial));
+    PetscCall(
+        PetscPrintf(comm, "time integration: %s, %s\n", run.time.name(),
+                    run.time.adaptive() ? "adaptive steps (-ts_adapt_type basic)" : "fixed steps"));
+  }
   // Set up now what TSSolve would at its first step (the Jacobian matrix and its
   // preallocation), so that -log_view counts it in the layout stage, not in the first step.
   PetscCall(TSSetSolution(run.ts, X));
@@ -758,6 +787,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(VecDestroy(&run.previous));
   PetscCall(VecDestroy(&run.jacobian_diagonal));
   PetscCall(VecDestroy(&run.initial));
+  PetscCall(run.time.destroy());
   PetscCall(TSDestroy(&run.ts));
   PetscCall(DMDestroy(&run.dm));
   PetscCall(reportUnusedOptions(comm));

@@ -5,6 +5,8 @@ of consolidation, and the nearly undrained limit.
     stability.py --case tiny_k     [--mesh ...]
     stability.py --case mandel_undrained
     stability.py --case mandel_drained_edge
+    ... [--ts bdf2]   the same checks with -ts_type bdf -ts_bdf_order 2 (its one step is PETSc's
+                      start-up: a backward-Euler half step, then BDF2 through 0, dt/2, dt)
 
 The pressure and displacement are read at every vertex of the mesh from the field output
 (fields.xmf + fields.h5, through tests/support/fields_reader.py).
@@ -55,12 +57,14 @@ import common  # noqa: E402
 from common import analytic as A  # noqa: E402
 from terzaghi import H, terzaghi_parameters  # noqa: E402
 
+TS_OPTIONS = {"beuler": [], "bdf2": ["-ts_type", "bdf", "-ts_bdf_order", 2]}
+
 
 def terzaghi_case(case, args):
     scene = common.scene_path(f"terzaghi_{args.dim}d.opts")
     opts = common.read_scene(scene)
     mesh = args.mesh or opts["-mesh"]
-    extra = ["-mesh", mesh, "-ts_max_steps", 1, "-output_fields_every", 1]
+    extra = ["-mesh", mesh, "-ts_max_steps", 1, "-output_fields_every", 1] + TS_OPTIONS[args.ts]
     if case == "first_step":
         dt = 1e-5
         extra += ["-ts_dt", dt, "-ts_max_time", dt]
@@ -70,7 +74,7 @@ def terzaghi_case(case, args):
         opts["-region_soil_permeability"] = "1e-20"
     q, Mc, kappa = terzaghi_parameters(opts)
     h = H / 20.0
-    tag = f"stability_{case}_{os.path.splitext(os.path.basename(mesh))[0]}_np{args.ranks}"
+    tag = f"stability_{case}_{os.path.splitext(os.path.basename(mesh))[0]}_np{args.ranks}_{args.ts}"
     out = common.output_dir(tag)
     common.run(scene, out, extra, ranks=args.ranks)
     ts = common.read_timeseries(out)
@@ -88,7 +92,7 @@ def terzaghi_case(case, args):
     for d in np.unique(np.round(depth, 9))[:6]:
         sel = np.abs(depth - d) < 1e-8
         print(f"  {d:6.3f} {p[sel].min() / q:9.5f} {p[sel].max() / q:9.5f}")
-    chk = common.Checks(f"stability {case}, mesh {mesh}, {args.ranks} rank(s)")
+    chk = common.Checks(f"stability {case}, mesh {mesh}, {args.ranks} rank(s), {args.ts}")
     chk.check("max p / q (<= 1.01)", p.max() / q, 1.01)
     chk.check("-min p / q (>= -0.01)", -p.min() / q, 0.01)
     deep = depth > 2 * h + 1e-9
@@ -106,8 +110,8 @@ def mandel_case(case, args):
     m = A.Mandel(E, nu, 1e-20 / 1e-3, a, b, q * a)
     und = m.undrained()
     p0 = und["p0"]
-    out = common.output_dir(f"stability_{case}_np{args.ranks}")
-    extra = ["-output_fields_every", 1]
+    out = common.output_dir(f"stability_{case}_np{args.ranks}_{args.ts}")
+    extra = ["-output_fields_every", 1] + TS_OPTIONS[args.ts]
     if case == "mandel_drained_edge":
         extra += ["-bc_right_p", 0]
     common.run(scene, out, extra, ranks=args.ranks)
@@ -117,7 +121,7 @@ def mandel_case(case, args):
     ux, uy = fields["displacement"][:, 0], fields["displacement"][:, 1]
     print(f"  p0 = q/2 = {p0:g} Pa; u_y(b) undrained {und['uy_top']:.6e}, u_x(a) {und['ux_side']:.6e}")
     print(f"  vertex p/p0 in [{p.min() / p0:.5f}, {p.max() / p0:.5f}], centre {common.column(ts, 'centre.p')[-1] / p0:.5f}")
-    chk = common.Checks(f"stability {case}, {args.ranks} rank(s)")
+    chk = common.Checks(f"stability {case}, {args.ranks} rank(s), {args.ts}")
     if case == "mandel_undrained":
         top = np.abs(X[:, 1] - b) < 1e-9
         right = np.abs(X[:, 0] - a) < 1e-9
@@ -145,6 +149,7 @@ def main():
     ap.add_argument("--dim", type=int, choices=(2, 3), default=2)
     ap.add_argument("--mesh", default=None)
     ap.add_argument("--ranks", type=int, default=1)
+    ap.add_argument("--ts", choices=tuple(TS_OPTIONS), default="beuler")
     args = ap.parse_args()
     if args.case.startswith("mandel"):
         mandel_case(args.case, args)
