@@ -114,8 +114,8 @@ def evaluate(st, plan, results, a):
     shared = {}
     for q in st.quantities.values():
         ref = q.reference
-        if ref["kind"] == "richardson":
-            line = [r for r in plan if r.path == ref["richardson"]
+        if ref["kind"] in ("richardson", "finest"):
+            line = [r for r in plan if r.path == ref[ref["kind"]]
                     and r.integrator == ref.get("integrator", r.integrator)
                     and r.solver == ref.get("solver", r.solver)
                     and r.ranks == ref.get("ranks", r.ranks)]
@@ -123,9 +123,16 @@ def evaluate(st, plan, results, a):
             line = [r for r in line if (r.integrator, r.solver, r.ranks) ==
                     (first.integrator, first.solver, first.ranks) and (r.key, q.name) in values]
             if len(line) < 2:
-                raise StudyError(f"{st.file}: quantities.{q.name}: the Richardson path "
-                                 f"'{ref['richardson']}' has fewer than 2 runs that finished")
+                raise StudyError(f"{st.file}: quantities.{q.name}: the reference path "
+                                 f"'{ref[ref['kind']]}' has fewer than 2 runs that finished")
             vals = [values[(r.key, q.name)][1] for r in line]
+            if ref["kind"] == "finest":  # the last run; its error about the last change
+                shared[q.name] = {"value": vals[-1], "estimated_error": np.abs(vals[-1] - vals[-2]),
+                                  "times": values[(line[-1].key, q.name)][0],
+                                  "method": f"the finest run of path {ref['finest']} "
+                                            f"({line[-1].line}, {line[-1].parameter} "
+                                            f"{line[-1].value:g})"}
+                continue
             v, p_used, p_obs, est = measure.richardson([r.value for r in line], vals,
                                                        ref.get("order"))
             shared[q.name] = {"value": v, "estimated_error": est, "order_used": p_used,
@@ -180,10 +187,10 @@ def evaluate(st, plan, results, a):
     # change from the finest run of the same line (a reference-free error of the path)
     for r, row in zip(plan, rows):
         line = [x for x in plan if x.line == r.line]
-        last = line[-1]
         for q in st.quantities.values():
+            have = [x for x in line if (x.key, q.name) in values]  # the finest that finished
             a_ = values.get((r.key, q.name))
-            b_ = values.get((last.key, q.name))
+            b_ = values.get((have[-1].key, q.name)) if have else None
             row[f"{q.name}_change_from_finest"] = (
                 measure.norm(q, a_[1] - b_[1]) / _scale(q, b_[1]) if a_ and b_ else float("nan"))
     summary = {"orders": orders(st, plan, rows, values), "references": shared}

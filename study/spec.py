@@ -10,7 +10,7 @@ import tomllib
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PATH_KINDS = ("space", "time", "both", "adaptive", "tolerance")
-REFERENCE_KINDS = ("closed_form", "value", "richardson", "study")
+REFERENCE_KINDS = ("closed_form", "value", "richardson", "finest", "study")
 DEFAULT_TARGETS = [0.1, 0.01, 0.001]
 
 
@@ -331,6 +331,11 @@ def _quantity(path, s, name, t):
             r["order"] = _number(path, k + ".reference.order", r["order"], positive=True)
         _known(path, k + ".reference.", r, ["kind", "richardson", "order", "integrator",
                                             "solver", "ranks"])
+    elif r["kind"] == "finest":
+        if r["finest"] not in s.paths:
+            raise _err(path, k + ".reference.finest", "the name of a path of this study",
+                       r["finest"])
+        _known(path, k + ".reference.", r, ["kind", "finest", "integrator", "solver", "ranks"])
     else:
         if not isinstance(r["study"], str) or "quantity" not in r:
             raise _err(path, k + ".reference", "{ study = \"name\", quantity = \"name\", "
