@@ -104,6 +104,7 @@ def plan(study, exe, cache):
                         r.opts = options_of(r.args)
                         r.key = run_key(r.args, r.tables, ranks, ident)
                         r.dir = os.path.join(cache, r.key)
+                        r.post, r.post_stamp = postprocess_command(study, r.dir)
                         runs.append(r)
     return runs
 
@@ -184,12 +185,46 @@ def run_key(args, tables, ranks, ident):
     return hashlib.sha256("\n".join(items).encode()).hexdigest()[:20]
 
 
-def cached(run):
+def postprocess_command(study, run_dir):
+    """The study's postprocess command for a run ({run_dir} filled in, a repository script
+    made absolute) and its stamp: the command and the script's content. Not part of the run's
+    key: a changed script re-runs the postprocessing of cached runs, not the runs."""
+    if not study.postprocess:
+        return [], ""
+    pp = [a.replace("{run_dir}", run_dir) for a in study.postprocess]
+    if pp and not os.path.isabs(pp[0]) and os.path.exists(os.path.join(TOP, pp[0])):
+        pp[0] = os.path.join(TOP, pp[0])
+    stamp = hashlib.sha256("\n".join(pp).encode())
+    if os.path.isfile(pp[0]):
+        with open(pp[0], "rb") as f:
+            stamp.update(f.read())
+    return pp, stamp.hexdigest()
+
+
+def run_postprocess(run, timeout, env=None):
+    """Runs the postprocess command of a run; returns "ok" or why not."""
+    done = subprocess.run(run.post, cwd=TOP, env=env, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True, timeout=timeout)
+    if done.returncode == 0:
+        return "ok"
+    with open(os.path.join(run.dir, "postprocess.txt"), "w") as f:
+        f.write(done.stdout)
+    return f"postprocess failed (exit {done.returncode})"
+
+
+def cached(run, timeout=600):
     f = os.path.join(run.dir, "result.json")
     if os.path.isfile(f):
         with open(f) as fh:
             res = json.load(fh)
         if res.get("status") == "ok":
+            post = getattr(run, "post", [])
+            if post and res.get("post_stamp") != run.post_stamp:
+                if run_postprocess(run, timeout) != "ok":
+                    return None
+                res["post_stamp"] = run.post_stamp
+                with open(f, "w") as fh:
+                    json.dump(res, fh, indent=1)
             return res
     return None
 
@@ -226,18 +261,11 @@ def execute(run, exe, study, log=print):
     wall = time.monotonic() - t0
     with open(os.path.join(run.dir, "stdout.txt"), "w") as f:
         f.write(out)
-    if status == "ok" and study.postprocess:
-        pp = [a.replace("{run_dir}", run.dir) for a in study.postprocess]
-        if pp and not os.path.isabs(pp[0]) and os.path.exists(os.path.join(TOP, pp[0])):
-            pp[0] = os.path.join(TOP, pp[0])
-        done = subprocess.run(pp, cwd=TOP, env=env, stdout=subprocess.PIPE,
-                              stderr=subprocess.STDOUT, text=True, timeout=study.timeout)
-        if done.returncode != 0:
-            status = f"postprocess failed (exit {done.returncode})"
-            with open(os.path.join(run.dir, "postprocess.txt"), "w") as f:
-                f.write(done.stdout)
+    if status == "ok" and getattr(run, "post", []):
+        status = run_postprocess(run, study.timeout, env)
     res = measure(out, run.dir, wall)
     res["status"] = status
+    res["post_stamp"] = getattr(run, "post_stamp", "")
     res["command"] = cmd
     with open(os.path.join(run.dir, "result.json"), "w") as f:
         json.dump(res, f, indent=1)
