@@ -67,14 +67,18 @@ def run_study(st, a, exe, active=()):
                 print(f"study {st.name}: reference from study {other}, running it first")
                 run_study(spec.load(other), a, exe, active + (st.name,))
     plan = runs.plan(st, exe, a.cache)
-    todo = [r for r in plan if a.rerun or runs.cached(r) is None]
-    print(f"study {st.name}: {len(plan)} runs, {len(plan) - len(todo)} cached, {len(todo)} to run",
-          flush=True)
+    todo, seen = [], set()  # the same settings on two paths: one run
+    for r in plan:
+        if r.key not in seen and (a.rerun or runs.cached(r) is None):
+            todo.append(r)
+        seen.add(r.key)
+    same = len(plan) - len(seen)
+    print(f"study {st.name}: {len(plan)} runs"
+          + (f" ({same} with the settings of another)" if same else "")
+          + f", {len(seen) - len(todo)} cached, {len(todo)} to run", flush=True)
     t0 = time.monotonic()
     done_keys = {}
     for i, r in enumerate(todo):
-        if r.key in done_keys:  # the same settings twice in one study
-            continue
         print(f"  [{i + 1}/{len(todo)}] {r.line}: {r.parameter} {r.value:g}", end="", flush=True)
         res = runs.execute(r, exe, st)
         done_keys[r.key] = res
