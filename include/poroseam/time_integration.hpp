@@ -34,6 +34,7 @@ public:
   PetscErrorCode accept(double t, Vec previous, Vec global);
 
   bool adaptive() const { return adaptive_; }
+  bool bdf() const { return bdf_; }
   /// "backward Euler", "BDF2", ... for the progress lines.
   const char *name() const;
 

@@ -523,10 +523,15 @@ PetscErrorCode postStep(TS ts)
   PetscCall(DMGetLocalVector(run.dm, &rate));
   PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, local));
   PetscCall(run.problem.insertBoundaryValues(t, local));
-  {
-    // The rates the outputs report (fluxes with storage, gap storage rate) are the
-    // integrator's own at the accepted state: its nonlinear function evaluated there (its
-    // shift and history are those of the step just taken) hands them to iFunctionLocal.
+  if (!run.time.bdf()) {
+    // Backward Euler's own rate: the difference with the last accepted state.
+    PetscCall(VecWAXPY(rate, -1.0, run.previous, local));
+    PetscCall(VecScale(rate, 1.0 / dt));
+  } else {
+    // The rates the outputs report (fluxes with storage, gap storage rate) are BDF's own at
+    // the accepted state: its nonlinear function evaluated there (its shift and history are
+    // those of the step just taken) hands them to iFunctionLocal. (Not for TSTHETA, whose
+    // function differentiates against a start state it has already moved on.)
     SNES snes;
     Vec F;
     PetscCall(TSGetSNES(ts, &snes));
