@@ -156,8 +156,8 @@ def richardson(params, values, order=None):
     component through the vector norm of the differences, clamped to [0.5, 6]); a declared
     `order` is used for the extrapolation when given. Returns (reference vector, order used,
     observed order, estimated error of the reference as a vector): the estimate is the spread
-    between extrapolations that should agree: declared vs observed order, and the finest pair
-    vs the next pair (four or more runs)."""
+    between extrapolations that should agree (declared vs observed order, and the finest pair
+    vs the next pair), at least Roache's grid convergence index of the finest run."""
     P = np.asarray(params, dtype=float)
     V = [np.asarray(v, dtype=float) for v in values]
     observed = float("nan")
@@ -181,6 +181,15 @@ def richardson(params, values, order=None):
         spread = np.maximum(spread, np.abs(ref - extrap(-2, -1, min(max(observed, 0.5), 6.0))))
     if len(V) >= 3:
         spread = np.maximum(spread, np.abs(ref - extrap(-3, -2, p)) / max((P[-2] / P[-1]) ** p, 1.0))
+    # With exactly three runs and the observed order, both extrapolations above agree by
+    # construction and the spread is zero, which says nothing. Floor: Roache's grid convergence
+    # index of the finest run, Fs |V_fine - V_coarse| / (r^p - 1), Fs = 1.25 with an order
+    # observed from three runs, 3 otherwise (Roache 1998; ASME V&V 20): a conservative bound,
+    # since the extrapolated value is usually closer than the finest run it is computed from.
+    safety = 1.25 if (len(V) >= 3 and order is None) else 3.0
+    r = (P[-2] / P[-1]) ** p
+    if r > 1.0:
+        spread = np.maximum(spread, safety * np.abs(V[-1] - V[-2]) / (r - 1.0))
     return ref, p, observed, spread
 
 
