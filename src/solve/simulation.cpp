@@ -1,12 +1,13 @@
 #include "poroseam/simulation.hpp"
 
+#include "run.hpp"
+
 #include "poroseam/field_writer.hpp"
 #include "poroseam/interface_writer.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/log_events.hpp"
 #include "poroseam/mesh.hpp"
-#include "poroseam/newton_forcing.hpp"
 #include "poroseam/nullspace.hpp"
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
@@ -23,60 +24,7 @@
 #include <vector>
 
 namespace poroseam {
-namespace {
-
-/// Per-boundary offsets of the local vector entries summed into force and flux resultants.
-struct BoundaryDofs {
-  std::vector<PetscInt> displacement;       ///< first displacement dof of each vertex
-  std::vector<PetscInt> pressure;           ///< pressure dof of each vertex that has one
-  std::vector<PetscInt> interface_pressure; ///< prescribed p3 dofs of interfaces ending here
-};
-
-struct Run {
-  Scene scene;
-  DM dm = nullptr;
-  Problem problem;
-  Probes probes;
-  FieldWriter fields;
-  InterfaceWriter interface_fields;
-  TS ts = nullptr;
-  TimeIntegration time;   ///< integrator checks, rates of prescribed values, error control
-  Vec previous = nullptr; ///< local state of the last accepted step (boundary values included)
-  /// While set (postStep), the residual copies the integrator's local rate here.
-  Vec capture_rate = nullptr;
-  Vec initial = nullptr;  ///< local initial state
-  std::vector<BoundaryDofs> boundary_dofs;
-  /// Per interface: its prescribed interface-pressure dofs, where water leaves along it.
-  std::vector<std::vector<PetscInt>> interface_end_dofs;
-  FILE *csv = nullptr;
-  double nominal_dt = 0.0;
-  double fail_dt_above = 0.0; ///< test hook: step attempts with a larger dt fail
-  double attempted_dt = 0.0;  ///< dt of the last residual evaluation
-  PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
-  double step_start = 0.0;
-  int step = 0;
-  double zero_state_scale = 0.0; ///< gross residual of the zero state (weight, initial stress)
-  double stage_time = 0.0;       ///< time of the step being solved
-  double reference_rtol = 1e-9;  ///< -snes_reference_rtol
-  double ksp_rtol = 0.0;         ///< -ksp_rtol: the tightest linear tolerance Newton asks for
-  /// Inexact Newton forcing (convergenceTest): the residual norm of the last Newton iterate,
-  /// and how much the first Newton iteration of the last step reduced the residual (0: no
-  /// step yet, or one that converged in its first iteration).
-  double newton_last_fnorm = 0.0;
-  double first_contraction = 0.0;
-  Vec jacobian_diagonal = nullptr; ///< with a fieldsplit: diag of the Jacobian (vertex_blocks)
-  /// Profiling: -log_view events and phases of this run, and whether the first Jacobian
-  /// (PsFirstJacobian) is behind us.
-  LogEvents events;
-  bool jacobian_assembled = false;
-};
-
-PetscErrorCode currentDt(Run &run, double *dt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(TSGetTimeStep(run.ts, dt));
-  PetscFunctionReturn(0);
-}
+namespace simulation_detail {
 
 PetscErrorCode boundaryLocal(DM, PetscReal t, Vec local, Vec local_rate, void *ctx)
 {
@@ -142,280 +90,6 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode collectBoundaryDofs(Run &run)
-{
-  PetscSection s;
-  PetscInt numFields, vStart, vEnd;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(run.dm, &s));
-  PetscCall(PetscSectionGetNumFields(s, &numFields));
-  PetscCall(DMPlexGetDepthStratum(run.dm, 0, &vStart, &vEnd));
-  run.boundary_dofs.assign(run.scene.boundaries.size(), BoundaryDofs());
-  for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
-    DMLabel label;
-    PetscCall(DMGetLabel(run.dm, boundaryLabelName(run.scene.boundaries[b].name).c_str(), &label));
-    IS points = nullptr;
-    PetscCall(DMLabelGetStratumIS(label, 1, &points));
-    if (!points) continue;
-    const PetscInt *idx;
-    PetscInt n;
-    PetscCall(ISGetLocalSize(points, &n));
-    PetscCall(ISGetIndices(points, &idx));
-    for (PetscInt i = 0; i < n; ++i) {
-      const PetscInt v = idx[i];
-      if (v < vStart || v >= vEnd) continue;
-      PetscInt off, dof = 0;
-      PetscCall(PetscSectionGetFieldOffset(s, v, kDisplacementField, &off));
-      run.boundary_dofs[b].displacement.push_back(off);
-      if (numFields > kPressureField)
-        PetscCall(PetscSectionGetFieldDof(s, v, kPressureField, &dof));
-      if (dof) {
-        PetscCall(PetscSectionGetFieldOffset(s, v, kPressureField, &off));
-        run.boundary_dofs[b].pressure.push_back(off);
-      }
-    }
-    PetscCall(ISRestoreIndices(points, &idx));
-    PetscCall(ISDestroy(&points));
-  }
-  // Prescribed interface pressures per boundary (the rule of the section constraints)...
-  for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
-    std::vector<PetscInt> edges;
-    PetscCall(lateralEdgesOnBoundary(run.dm, run.scene.boundaries[b].name, edges));
-    for (PetscInt e : edges) {
-      PetscInt cdof = 0, off;
-      if (numFields > kInterfacePressureField)
-        PetscCall(PetscSectionGetFieldConstraintDof(s, e, kInterfacePressureField, &cdof));
-      if (!cdof) continue;
-      PetscCall(PetscSectionGetFieldOffset(s, e, kInterfacePressureField, &off));
-      run.boundary_dofs[b].interface_pressure.push_back(off);
-    }
-  }
-  // ... and per interface (lateral edges, found from their star).
-  run.interface_end_dofs.assign(run.scene.interfaces.size(), {});
-  DMLabel lateral, iface;
-  PetscCall(DMGetLabel(run.dm, kInterfacePressureLabel, &lateral));
-  PetscCall(DMGetLabel(run.dm, kInterfaceLabel, &iface));
-  IS edges = nullptr;
-  if (lateral && iface) PetscCall(DMLabelGetStratumIS(lateral, 1, &edges));
-  if (edges) {
-    const PetscInt *idx;
-    PetscInt n;
-    PetscCall(ISGetLocalSize(edges, &n));
-    PetscCall(ISGetIndices(edges, &idx));
-    for (PetscInt k = 0; k < n; ++k) {
-      PetscInt cdof = 0, off;
-      PetscCall(PetscSectionGetFieldConstraintDof(s, idx[k], kInterfacePressureField, &cdof));
-      if (!cdof) continue;
-      PetscCall(PetscSectionGetFieldOffset(s, idx[k], kInterfacePressureField, &off));
-      PetscInt nstar, *star = nullptr, which = -1;
-      PetscCall(DMPlexGetTransitiveClosure(run.dm, idx[k], PETSC_FALSE, &nstar, &star));
-      for (PetscInt m = 0; m < nstar && which < 1; ++m)
-        PetscCall(DMLabelGetValue(iface, star[2 * m], &which));
-      PetscCall(DMPlexRestoreTransitiveClosure(run.dm, idx[k], PETSC_FALSE, &nstar, &star));
-      if (which >= 1) run.interface_end_dofs[which - 1].push_back(off);
-    }
-    PetscCall(ISRestoreIndices(edges, &idx));
-    PetscCall(ISDestroy(&edges));
-  }
-  PetscFunctionReturn(0);
-}
-
-/// Per boundary: force [N], water outflow from the bulk [m3/s] and, with interface flow,
-/// water leaving along interfaces that end there [m3/s]; then the longitudinal outflow
-/// [m3/s] of every interface (0 without flow or prescribed ends). From the residual without
-/// loads.
-PetscErrorCode boundaryResultants(Run &run, double t, double dt, Vec local, Vec rate,
-                                  std::vector<double> &out)
-{
-  const int dim = run.scene.dim, per = dim + 1 + (run.scene.hasInterfacePressure() ? 1 : 0);
-  Vec f;
-  const PetscScalar *r;
-  MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(run.dm, &f));
-  PetscCall(run.problem.residual(t, local, rate, ResidualMode{1.0, false, dt}, f));
-  PetscCall(VecGetArrayRead(f, &r));
-  std::vector<double> mine(run.boundary_dofs.size() * per, 0.0);
-  for (size_t b = 0; b < run.boundary_dofs.size(); ++b) {
-    // Each rank holds only its own cells' contributions, so the sum over ranks counts each once.
-    for (PetscInt off : run.boundary_dofs[b].displacement)
-      for (int d = 0; d < dim; ++d)
-        mine[b * per + d] += r[off + d];
-    for (PetscInt off : run.boundary_dofs[b].pressure)
-      mine[b * per + dim] -= r[off];
-    for (PetscInt off : run.boundary_dofs[b].interface_pressure)
-      mine[b * per + dim + 1] -= r[off];
-  }
-  // Longitudinal outflow of each interface through its ends with prescribed p3.
-  for (const auto &dofs : run.interface_end_dofs) {
-    double outflow = 0.0;
-    for (PetscInt off : dofs)
-      outflow -= r[off];
-    mine.push_back(outflow);
-  }
-  PetscCall(VecRestoreArrayRead(f, &r));
-  PetscCall(DMRestoreLocalVector(run.dm, &f));
-  out.assign(mine.size(), 0.0);
-  PetscCallMPI(MPI_Allreduce(mine.data(), out.data(), (int)mine.size(), MPI_DOUBLE, MPI_SUM, comm));
-  PetscFunctionReturn(0);
-}
-
-/// Per interface, then per part when it has several: the force on side 1 from side 2
-/// [N, per m in 2D] and, with flow, the water from side 1 into the gap, from the gap into
-/// side 2 [m3/s], the water stored in the gap [m3] and its rate [m3/s], and the integral of p3
-/// over the interface [N]: the normal force the water in the gap exerts.
-int interfaceBlock(const Scene &scene, const Interface &i)
-{
-  return scene.dim + (i.flow ? 5 : 0);
-}
-
-PetscErrorCode interfaceResultants(Run &run, Vec local, const InterfaceRates &rates,
-                                   std::vector<double> &out)
-{
-  const Scene &scene = run.scene;
-  std::vector<size_t> first;
-  size_t count = 0;
-  for (const auto &i : scene.interfaces) {
-    first.push_back(count);
-    count += interfaceBlock(scene, i) * (1 + (i.surfaces.size() > 1 ? i.surfaces.size() : 0));
-  }
-  std::vector<double> mine(count, 0.0);
-  PetscFunctionBeginUser;
-  PetscCall(run.problem.interfaces().visit(
-      local, rates, [&](int iface, int surface, PetscInt, const InterfacePointState &st) {
-        const Interface &in = scene.interfaces[iface];
-        const int block = interfaceBlock(scene, in);
-        auto add = [&](size_t base) {
-          for (int d = 0; d < scene.dim; ++d)
-            mine[base + d] += st.weight * st.traction[d];
-          if (!in.flow) return;
-          mine[base + scene.dim + 0] += st.weight * st.transversal_flux1;
-          mine[base + scene.dim + 1] += st.weight * st.transversal_flux2;
-          mine[base + scene.dim + 2] += st.weight * st.aperture;
-          mine[base + scene.dim + 3] += st.weight * st.aperture_rate;
-          mine[base + scene.dim + 4] += st.weight * st.interface_pressure;
-        };
-        add(first[iface]);
-        if (in.surfaces.size() > 1) add(first[iface] + block * (1 + surface));
-      }));
-  out.assign(count, 0.0);
-  PetscCallMPI(MPI_Allreduce(mine.data(), out.data(), (int)count, MPI_DOUBLE, MPI_SUM,
-                             PetscObjectComm((PetscObject)run.dm)));
-  PetscFunctionReturn(0);
-}
-
-/// Force level of the iterate X: the sum of the magnitudes of the forces through every
-/// boundary (reactions and applied loads) and interface.
-PetscErrorCode forceLevel(Run &run, Vec X, double *level)
-{
-  Vec local, zero;
-  std::vector<double> resultants, interface;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(run.dm, &local));
-  PetscCall(DMGetLocalVector(run.dm, &zero));
-  PetscCall(VecSet(zero, 0.0));
-  PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, local));
-  PetscCall(run.problem.insertBoundaryValues(run.stage_time, local));
-  PetscCall(boundaryResultants(run, run.stage_time, run.attempted_dt, local, zero, resultants));
-  PetscCall(interfaceResultants(run, local, InterfaceRates{zero, run.attempted_dt}, interface));
-  PetscCall(DMRestoreLocalVector(run.dm, &zero));
-  PetscCall(DMRestoreLocalVector(run.dm, &local));
-  const int dim = run.scene.dim;
-  double sum = 0.0;
-  const int per = dim + 1 + (run.scene.hasInterfacePressure() ? 1 : 0);
-  for (size_t b = 0; b < run.scene.boundaries.size(); ++b)
-    for (int d = 0; d < dim; ++d)
-      sum += std::fabs(resultants[b * per + d]);
-  size_t k = 0; // forces of each whole interface (its parts repeat them)
-  for (const auto &in : run.scene.interfaces) {
-    for (int d = 0; d < dim; ++d)
-      sum += std::fabs(interface[k + d]);
-    k += interfaceBlock(run.scene, in) * (1 + (in.surfaces.size() > 1 ? in.surfaces.size() : 0));
-  }
-  *level = sum;
-  PetscFunctionReturn(0);
-}
-
-/// PETSc's default tests (with -snes_rtol 1e-12 by default), plus the one that normally
-/// decides: after at least one Newton update, converged when the residual is below
-/// reference_rtol times a force scale, the larger of the gross residual of the zero state
-/// (weight, initial stresses) and the force level of the current iterate (reactions, loads,
-/// interface forces). Relative to the initial residual is no good here: a step that starts
-/// near equilibrium cannot reduce its tiny residual by rtol before round-off, and a
-/// displacement-driven step of a stiff body starts with a huge residual that says nothing
-/// of the forces that matter.
-///
-/// It also sets the linear tolerance of the next Newton solve (an inexact Newton method;
-/// linearTolerance), so that an iterative solver does not solve more exactly than the next
-/// Newton iterate can use.
-PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
-                               PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
-{
-  Run &run = *static_cast<Run *>(ctx);
-  KSP ksp;
-  PetscFunctionBeginUser;
-  PetscCall(SNESGetKSP(snes, &ksp));
-  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
-  const double contraction =
-      it > 0 && run.newton_last_fnorm > 0.0 ? fnorm / run.newton_last_fnorm : 0.0;
-  run.newton_last_fnorm = fnorm;
-  if (it == 0) {
-    PetscCall(KSPSetTolerances(ksp, linearTolerance(run.ksp_rtol, 0.0, run.first_contraction),
-                               PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-    PetscFunctionReturn(0);
-  }
-  if (*reason != SNES_CONVERGED_ITERATING) PetscFunctionReturn(0);
-  Vec X;
-  double level = 0.0;
-  PetscCall(SNESGetSolution(snes, &X));
-  PetscCall(forceLevel(run, X, &level));
-  const double scale = std::max(run.zero_state_scale, level);
-  const double target = run.reference_rtol * scale;
-  PetscCall(PetscInfo(snes, "poroseam: residual %g, force scale %g\n", (double)fnorm, scale));
-  const bool converged = scale > 0.0 && fnorm <= target;
-  if (it == 1) run.first_contraction = converged ? 0.0 : contraction;
-  if (converged) {
-    *reason = SNES_CONVERGED_FNORM_ABS;
-  } else if (fnorm > 0.0) {
-    PetscCall(KSPSetTolerances(ksp, linearTolerance(run.ksp_rtol, target / fnorm, contraction),
-                               PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-  }
-  PetscFunctionReturn(0);
-}
-
-/// Safeguard of the extrapolated start (-ts_theta_initial_guess_extrapolate): Newton starts
-/// from the extrapolation only when its residual is smaller than that of the last accepted
-/// state. Where the loading reverses, the extrapolation points the wrong way: measured on 50
-/// shear reversals of soft blocks (nodal), it raised the worst step from 4 to 9 Newton
-/// iterations; with this choice the reversals cost what they did before. Two residual
-/// evaluations per step.
-PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx)
-{
-  Run &run = *static_cast<Run *>(ctx);
-  Vec last, F;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetGlobalVector(run.dm, &last));
-  PetscCall(DMGetGlobalVector(run.dm, &F));
-  PetscCall(DMLocalToGlobal(run.dm, run.previous, INSERT_VALUES, last));
-  PetscReal distance;
-  PetscCall(VecAXPY(last, -1.0, X));
-  PetscCall(VecNorm(last, NORM_INFINITY, &distance));
-  PetscCall(VecAXPY(last, 1.0, X));
-  if (distance > 0.0) {
-    PetscReal extrapolated, unchanged;
-    PetscCall(SNESComputeFunction(snes, X, F));
-    PetscCall(VecNorm(F, NORM_2, &extrapolated));
-    PetscCall(SNESComputeFunction(snes, last, F));
-    PetscCall(VecNorm(F, NORM_2, &unchanged));
-    PetscCall(PetscInfo(snes, "poroseam: residual of the extrapolated start %g, of the last state %g\n",
-                        (double)extrapolated, (double)unchanged));
-    if (!(extrapolated < unchanged)) PetscCall(VecCopy(last, X));
-  }
-  PetscCall(DMRestoreGlobalVector(run.dm, &F));
-  PetscCall(DMRestoreGlobalVector(run.dm, &last));
   PetscFunctionReturn(0);
 }
 
@@ -615,7 +289,9 @@ PetscErrorCode reportUnusedOptions(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-} // namespace
+} // namespace simulation_detail
+
+using namespace simulation_detail;
 
 PetscErrorCode runSimulation(MPI_Comm comm)
 {

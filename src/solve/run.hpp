@@ -1,0 +1,99 @@
+// The state of one run shared by its parts (internal to src/solve): the time-stepping loop
+// (simulation.cpp), the forces and flows it reports (run_resultants.cpp) and the control of
+// Newton's iterations (newton_control.cpp).
+#pragma once
+
+#include "poroseam/field_writer.hpp"
+#include "poroseam/interface_assembly.hpp"
+#include "poroseam/interface_writer.hpp"
+#include "poroseam/log_events.hpp"
+#include "poroseam/probes.hpp"
+#include "poroseam/problem.hpp"
+#include "poroseam/scene.hpp"
+#include "poroseam/time_integration.hpp"
+
+#include <cstdio>
+#include <petscts.h>
+#include <vector>
+
+namespace poroseam {
+namespace simulation_detail {
+
+/// Per-boundary offsets of the local vector entries summed into force and flux resultants.
+struct BoundaryDofs {
+  std::vector<PetscInt> displacement;       ///< first displacement dof of each vertex
+  std::vector<PetscInt> pressure;           ///< pressure dof of each vertex that has one
+  std::vector<PetscInt> interface_pressure; ///< prescribed p3 dofs of interfaces ending here
+};
+
+struct Run {
+  Scene scene;
+  DM dm = nullptr;
+  Problem problem;
+  Probes probes;
+  FieldWriter fields;
+  InterfaceWriter interface_fields;
+  TS ts = nullptr;
+  TimeIntegration time;   ///< integrator checks, rates of prescribed values, error control
+  Vec previous = nullptr; ///< local state of the last accepted step (boundary values included)
+  /// While set (postStep), the residual copies the integrator's local rate here.
+  Vec capture_rate = nullptr;
+  Vec initial = nullptr; ///< local initial state
+  std::vector<BoundaryDofs> boundary_dofs;
+  /// Per interface: its prescribed interface-pressure dofs, where water leaves along it.
+  std::vector<std::vector<PetscInt>> interface_end_dofs;
+  FILE *csv = nullptr;
+  double nominal_dt = 0.0;
+  double fail_dt_above = 0.0; ///< test hook: step attempts with a larger dt fail
+  double attempted_dt = 0.0;  ///< dt of the last residual evaluation
+  PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
+  double step_start = 0.0;
+  int step = 0;
+  double zero_state_scale = 0.0; ///< gross residual of the zero state (weight, initial stress)
+  double stage_time = 0.0;       ///< time of the step being solved
+  double reference_rtol = 1e-9;  ///< -snes_reference_rtol
+  double ksp_rtol = 0.0;         ///< -ksp_rtol: the tightest linear tolerance Newton asks for
+  /// Inexact Newton forcing (convergenceTest): the residual norm of the last Newton iterate,
+  /// and how much the first Newton iteration of the last step reduced the residual (0: no
+  /// step yet, or one that converged in its first iteration).
+  double newton_last_fnorm = 0.0;
+  double first_contraction = 0.0;
+  Vec jacobian_diagonal = nullptr; ///< with a fieldsplit: diag of the Jacobian (vertex_blocks)
+  /// Profiling: -log_view events and phases of this run, and whether the first Jacobian
+  /// (PsFirstJacobian) is behind us.
+  LogEvents events;
+  bool jacobian_assembled = false;
+};
+
+inline PetscErrorCode currentDt(Run &run, double *dt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TSGetTimeStep(run.ts, dt));
+  PetscFunctionReturn(0);
+}
+
+// run_resultants.cpp: forces and flows through boundaries and interfaces.
+
+/// The local dofs of every named boundary (run.boundary_dofs, run.interface_end_dofs).
+PetscErrorCode collectBoundaryDofs(Run &run);
+/// Force and water resultants of every boundary at (t, dt) from the residual without loads.
+PetscErrorCode boundaryResultants(Run &run, double t, double dt, Vec local, Vec rate,
+                                  std::vector<double> &out);
+/// Entries per interface in interfaceResultants' output.
+int interfaceBlock(const Scene &scene, const Interface &i);
+/// Forces, water and gap storage of every interface and interface part.
+PetscErrorCode interfaceResultants(Run &run, Vec local, const InterfaceRates &rates,
+                                   std::vector<double> &out);
+/// Force level of the iterate X (sum of the magnitudes of boundary and interface forces).
+PetscErrorCode forceLevel(Run &run, Vec X, double *level);
+
+// newton_control.cpp: when Newton stops, how exactly it solves, where it starts.
+
+/// SNES convergence test (context: the Run).
+PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                               PetscReal fnorm, SNESConvergedReason *reason, void *ctx);
+/// SNES initial guess (context: the Run).
+PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx);
+
+} // namespace simulation_detail
+} // namespace poroseam
