@@ -29,6 +29,8 @@ public:
   /// integrator's difference formula for prescribed values, on `previous` (the local last
   /// accepted state) and the states before it.
   PetscErrorCode stencil(TS ts, double t, Vec previous, RateStencil *stencil, double *since);
+  /// The time from the last accepted state to t (what stencil() reports as `since`).
+  double sinceAccepted(double t) const { return t - accepted_time_[0]; }
   /// After an accepted step at time t, before the caller overwrites `previous` (the local
   /// state of the step before) with the new state; `global` is the new solution.
   PetscErrorCode accept(double t, Vec previous, Vec global);

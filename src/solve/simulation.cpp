@@ -43,11 +43,12 @@ PetscErrorCode boundaryLocal(DM, PetscReal t, Vec local, Vec local_rate, void *c
 PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f, void *ctx)
 {
   Run &run = *static_cast<Run *>(ctx);
-  double dt, since;
-  RateStencil stencil;
+  double dt;
   PetscFunctionBeginUser;
   PetscCall(currentDt(run, &dt));
-  PetscCall(run.time.stencil(run.ts, t, run.previous, &stencil, &since));
+  // Rates of prescribed values are in local_rate already (boundaryLocal, which PETSc calls
+  // before this); the non-linear rates need only the time since the last accepted state.
+  const double since = run.time.sinceAccepted(t);
   if (run.capture_rate) {
     PetscCall(VecCopy(local_rate, run.capture_rate));
     PetscCall(VecSet(f, 0.0));
@@ -72,11 +73,10 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
                               Mat P, void *ctx)
 {
   Run &run = *static_cast<Run *>(ctx);
-  double dt, since;
-  RateStencil stencil;
+  double dt;
   PetscFunctionBeginUser;
   PetscCall(currentDt(run, &dt));
-  PetscCall(run.time.stencil(run.ts, t, run.previous, &stencil, &since));
+  const double since = run.time.sinceAccepted(t);
   // The first assembly also sets up the matrix's communication: part of the set-up cost.
   const bool first = !run.jacobian_assembled;
   if (first) PetscCall(beginLogEvent(run.events.first_jacobian));

@@ -288,7 +288,8 @@ PetscErrorCode TimeIntegration::accept(double t, Vec previous, Vec global)
   accepted_time_[1] = accepted_time_[0];
   accepted_time_[0] = t;
   ++accepted_;
-  PetscCall(VecCopy(previous, before_previous_));
+  // Only BDF2 differentiates through the state before the last one.
+  if (bdf_ && order_ == 2) PetscCall(VecCopy(previous, before_previous_));
   if (adaptive_) {
     PetscCall(TSAdaptSetAlwaysAccept(adapt_, PETSC_FALSE));
     double change[3];
