@@ -70,6 +70,11 @@ public:
   /// Stores the history of the converged state `local` (call after an accepted step only).
   PetscErrorCode commit(Vec local);
 
+  /// Where the contact law of some integration point of this rank changes branch (open /
+  /// stick / slip) on the straight path from `local` (s = 0) to `local_end` (s = 1), both
+  /// with their boundary values: appends those s in (0, 1] to `out` (unsorted).
+  PetscErrorCode stateChanges(Vec local, Vec local_end, std::vector<double> &out) const;
+
   /// Visits every integration point of this rank with its state at `local`.
   PetscErrorCode visit(Vec local, const InterfaceRates &rates,
                        const std::function<void(int iface, int surface, PetscInt cell,
