@@ -51,7 +51,8 @@ struct InterfaceRates {
 
 class InterfaceAssembly {
 public:
-  /// Initial effective stress of a region at a point (for the initial contact pressure).
+  /// Initial total stress of a region at a point, sigma'_0 - alpha p_0 I (for the initial contact
+  /// pressure and shear).
   using InitialStress = std::function<void(const double x[], int region_tag, double s[3][3])>;
 
   /// Initial (hydrostatic) pore pressure at a point.
