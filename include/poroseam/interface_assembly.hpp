@@ -69,6 +69,11 @@ public:
                           Mat J) const;
   /// Stores the history of the converged state `local` (call after an accepted step only).
   PetscErrorCode commit(Vec local);
+  /// The committed history of this rank's integration points as plain numbers (for
+  /// checkpoints: kHistoryValues per point, in this rank's cell order), and back.
+  static constexpr int kHistoryValues = 4;
+  std::vector<double> committedHistory() const;
+  PetscErrorCode restoreHistory(const std::vector<double> &values);
 
   /// Visits every integration point of this rank with its state at `local`.
   PetscErrorCode visit(Vec local, const InterfaceRates &rates,

@@ -12,6 +12,8 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/time_integration.hpp"
 
+#include "stop_request.hpp"
+
 #include <cstdio>
 #include <petscts.h>
 #include <vector>
@@ -63,6 +65,16 @@ struct Run {
   /// (PsFirstJacobian) is behind us.
   LogEvents events;
   bool jacobian_assembled = false;
+  /// Newton's extrapolated start (backward Euler): the last accepted increment of the
+  /// unknowns (global) and the step it was taken over (0: none yet).
+  Vec last_increment = nullptr;
+  double last_dt = 0.0;
+  /// Checkpoints (checkpoint.hpp): every this many steps (0: only when a run stops early),
+  /// the step of the last one written (-1: none), and the signals that ask a run to stop.
+  int checkpoint_every = 0;
+  int checkpoint_step = -1;
+  StopRequest stop;
+  int stop_signal = 0; ///< the signal that stopped the run (0: none)
 };
 
 inline PetscErrorCode currentDt(Run &run, double *dt)

@@ -74,13 +74,13 @@ CASES = {
                                  expect=["inverted element"], ranks=2),
     "missing_E_np2": dict(drop=["-region_soil_E"], expect=["-region_soil_E"], ranks=2),
     # good runs
-    "unused_option": dict(args=["-not_an_option", "3", "-ts_max_steps", "2"], ok=True,
+    "unused_option": dict(args=["-not_an_option", "3", "-ts_max_time", "0.4"], ok=True,
                           expect=["-not_an_option", "never used"]),
     # paths with shell characters are only ever file names: gmsh is run without a shell, so
     # the quote and the $(...) in the mesh path and output directory do nothing but name them
     "shell_characters_in_paths": dict(
         args=["-mesh", "{out}/it's $(touch pwned)/column.geo",
-              "-output_dir", "{out}/it's $(touch pwned)/results", "-ts_max_steps", "1"],
+              "-output_dir", "{out}/it's $(touch pwned)/results", "-ts_max_time", "0.2"],
         copy=("meshes/terzaghi_column_2d.geo", "it's $(touch pwned)/column.geo"), ok=True,
         expect=["1 steps"], absent=["pwned", "{out}/pwned", "{out}/it's $(touch pwned)/pwned"],
         present=["{out}/it's $(touch pwned)/results/timeseries.csv"]),
