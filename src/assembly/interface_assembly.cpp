@@ -323,86 +323,87 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
     }
     PetscFunctionReturn(0);
   };
-  PetscCall(loop(
-      local, rates,
-      [&](const Cell &cell, int, const double *phi, const InterfacePointState &st,
-          const FlowPoint &fp, const double T[3][3], int n) -> PetscErrorCode {
-        PetscFunctionBeginUser;
-        if (&cell != current) {
-          PetscCall(flush());
-          current = &cell;
-          size = n;
-          K.assign((size_t)n * n, 0.0);
-        }
-        auto add = [&](int row, int col, double v) { K[(size_t)row * size + col] += v; };
-        const Interface &in = scene_->interfaces[cell.iface];
-        const int nf = (int)cell.u1.size();
-        const double w = st.weight;
-        const double *e1 = cell.frame[0];
-        // Contact: R_1a = -w phi_a t(g), R_2a = +w phi_a t(g), g = sum phi_b (u_2b -
-        // u_1b).
-        for (int a = 0; a < nf; ++a)
-          for (int b = 0; b < nf; ++b) {
-            const double wab = w * phi[a] * phi[b];
-            const int rows[2] = {cell.u1[a], cell.u2[a]};
-            const int cols[2] = {cell.u1[b], cell.u2[b]};
-            const double sign[2] = {-1.0, 1.0};
-            for (int r = 0; r < 2; ++r)
-              for (int c = 0; c < 2; ++c)
-                for (int i = 0; i < dim_; ++i)
-                  for (int j = 0; j < dim_; ++j)
-                    add(rows[r] + i, cols[c] + j, sign[r] * sign[c] * wab * T[i][j]);
-          }
-        if (!st.flow) PetscFunctionReturn(0);
-        const double ws = mass_scale * w;
-        // d q_l / d h (h depends on u through the opening).
-        double dq_dh[3];
-        for (int d = 0; d < 3; ++d)
-          dq_dh[d] = -fp.d_conductivity * (fp.grad_p3[d] - scene_->fluid_density * fp.gravity_t[d]);
-        const double active = fp.opening_active ? 1.0 : 0.0;
-        // d(do/dt)/dg_N with dg_b/dg_N = 1 - dt shift (the gap rate moves with the
-        // gap by shift): (active - back) / dt + shift back. Backward Euler
-        // (dt shift = 1): shift active.
-        const double back = fp.back_opening_active ? 1.0 : 0.0;
-        const double d_storage = rates.dt > 0.0 ? (active - back) / rates.dt + shift * back : 0.0;
-        for (int a = 0; a < nf; ++a)
-          for (int b = 0; b < nf; ++b) {
-            const double pp = phi[a] * phi[b];
-            double gg = 0.0, gq = 0.0;
-            for (int d = 0; d < dim_; ++d) {
-              gg += fp.grad_phi[a][d] * fp.grad_phi[b][d];
-              gq += fp.grad_phi[a][d] * dq_dh[d];
-            }
-            // p3 on both faces: R_u1 += w phi p3 e1, R_u2 -= w phi p3 e1.
-            for (int i = 0; i < dim_; ++i) {
-              add(cell.u1[a] + i, cell.p3[b], w * pp * e1[i]);
-              add(cell.u2[a] + i, cell.p3[b], -w * pp * e1[i]);
-            }
-            // Interface balance row.
-            add(cell.p3[a], cell.p3[b],
-                ws *
-                    (fp.conductivity * gg +
-                     (in.transmissivity1 * cell.porous1 + in.transmissivity2 * cell.porous2) * pp));
-            if (cell.porous1) {
-              add(cell.p3[a], cell.p1[b], -ws * in.transmissivity1 * pp);
-              add(cell.p1[a], cell.p1[b], ws * in.transmissivity1 * pp);
-              add(cell.p1[a], cell.p3[b], -ws * in.transmissivity1 * pp);
-            }
-            if (cell.porous2) {
-              add(cell.p3[a], cell.p2[b], -ws * in.transmissivity2 * pp);
-              add(cell.p2[a], cell.p2[b], ws * in.transmissivity2 * pp);
-              add(cell.p2[a], cell.p3[b], -ws * in.transmissivity2 * pp);
-            }
-            // Storage dh/dt and conductivity through the opening: d/du_2 = +, d/du_1 =
-            // -.
-            const double du = ws * (d_storage * pp - active * gq * phi[b]);
-            for (int j = 0; j < dim_; ++j) {
-              add(cell.p3[a], cell.u2[b] + j, du * e1[j]);
-              add(cell.p3[a], cell.u1[b] + j, -du * e1[j]);
-            }
-          }
-        PetscFunctionReturn(0);
-      }));
+  PetscCall(loop(local, rates,
+                 [&](const Cell &cell, int, const double *phi, const InterfacePointState &st,
+                     const FlowPoint &fp, const double T[3][3], int n) -> PetscErrorCode {
+                   PetscFunctionBeginUser;
+                   if (&cell != current) {
+                     PetscCall(flush());
+                     current = &cell;
+                     size = n;
+                     K.assign((size_t)n * n, 0.0);
+                   }
+                   auto add = [&](int row, int col, double v) { K[(size_t)row * size + col] += v; };
+                   const Interface &in = scene_->interfaces[cell.iface];
+                   const int nf = (int)cell.u1.size();
+                   const double w = st.weight;
+                   const double *e1 = cell.frame[0];
+                   // Contact: R_1a = -w phi_a t(g), R_2a = +w phi_a t(g), g = sum phi_b (u_2b -
+                   // u_1b).
+                   for (int a = 0; a < nf; ++a)
+                     for (int b = 0; b < nf; ++b) {
+                       const double wab = w * phi[a] * phi[b];
+                       const int rows[2] = {cell.u1[a], cell.u2[a]};
+                       const int cols[2] = {cell.u1[b], cell.u2[b]};
+                       const double sign[2] = {-1.0, 1.0};
+                       for (int r = 0; r < 2; ++r)
+                         for (int c = 0; c < 2; ++c)
+                           for (int i = 0; i < dim_; ++i)
+                             for (int j = 0; j < dim_; ++j)
+                               add(rows[r] + i, cols[c] + j, sign[r] * sign[c] * wab * T[i][j]);
+                     }
+                   if (!st.flow) PetscFunctionReturn(0);
+                   const double ws = mass_scale * w;
+                   // d q_l / d h (h depends on u through the opening).
+                   double dq_dh[3];
+                   for (int d = 0; d < 3; ++d)
+                     dq_dh[d] = -fp.d_conductivity *
+                                (fp.grad_p3[d] - scene_->fluid_density * fp.gravity_t[d]);
+                   const double active = fp.opening_active ? 1.0 : 0.0;
+                   // d(do/dt)/dg_N with dg_b/dg_N = 1 - dt shift (the gap rate moves with the
+                   // gap by shift): (active - back) / dt + shift back. Backward Euler
+                   // (dt shift = 1): shift active.
+                   const double back = fp.back_opening_active ? 1.0 : 0.0;
+                   const double d_storage =
+                       rates.dt > 0.0 ? (active - back) / rates.dt + shift * back : 0.0;
+                   for (int a = 0; a < nf; ++a)
+                     for (int b = 0; b < nf; ++b) {
+                       const double pp = phi[a] * phi[b];
+                       double gg = 0.0, gq = 0.0;
+                       for (int d = 0; d < dim_; ++d) {
+                         gg += fp.grad_phi[a][d] * fp.grad_phi[b][d];
+                         gq += fp.grad_phi[a][d] * dq_dh[d];
+                       }
+                       // p3 on both faces: R_u1 += w phi p3 e1, R_u2 -= w phi p3 e1.
+                       for (int i = 0; i < dim_; ++i) {
+                         add(cell.u1[a] + i, cell.p3[b], w * pp * e1[i]);
+                         add(cell.u2[a] + i, cell.p3[b], -w * pp * e1[i]);
+                       }
+                       // Interface balance row.
+                       add(cell.p3[a], cell.p3[b],
+                           ws * (fp.conductivity * gg + (in.transmissivity1 * cell.porous1 +
+                                                         in.transmissivity2 * cell.porous2) *
+                                                            pp));
+                       if (cell.porous1) {
+                         add(cell.p3[a], cell.p1[b], -ws * in.transmissivity1 * pp);
+                         add(cell.p1[a], cell.p1[b], ws * in.transmissivity1 * pp);
+                         add(cell.p1[a], cell.p3[b], -ws * in.transmissivity1 * pp);
+                       }
+                       if (cell.porous2) {
+                         add(cell.p3[a], cell.p2[b], -ws * in.transmissivity2 * pp);
+                         add(cell.p2[a], cell.p2[b], ws * in.transmissivity2 * pp);
+                         add(cell.p2[a], cell.p3[b], -ws * in.transmissivity2 * pp);
+                       }
+                       // Storage dh/dt and conductivity through the opening: d/du_2 = +, d/du_1 =
+                       // -.
+                       const double du = ws * (d_storage * pp - active * gq * phi[b]);
+                       for (int j = 0; j < dim_; ++j) {
+                         add(cell.p3[a], cell.u2[b] + j, du * e1[j]);
+                         add(cell.p3[a], cell.u1[b] + j, -du * e1[j]);
+                       }
+                     }
+                   PetscFunctionReturn(0);
+                 }));
   PetscCall(flush());
   PetscFunctionReturn(0);
 }
@@ -428,7 +429,8 @@ std::vector<double> InterfaceAssembly::committedHistory() const
   std::vector<double> values;
   values.reserve(committed_.size() * kHistoryValues);
   for (const auto &h : committed_)
-    values.insert(values.end(), {h.gap_tangential[0], h.gap_tangential[1], h.shear[0], h.shear[1]});
+    values.insert(values.end(),
+                  {h.gap_tangential[0], h.gap_tangential[1], h.shear[0], h.shear[1]});
   return values;
 }
 

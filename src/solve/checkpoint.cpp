@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <petscviewerhdf5.h>
 #include <regex>
+#include <vector>
 
 namespace poroseam {
 namespace simulation_detail {
@@ -275,6 +276,70 @@ PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, Checkpoi
   // The last accepted local state, with the prescribed values of its time.
   PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, run.previous));
   PetscCall(run.problem.insertBoundaryValues(info->time, run.previous));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *restart)
+{
+  char dir[PETSC_MAX_PATH_LEN] = "";
+  PetscBool set = PETSC_FALSE, step_set = PETSC_FALSE;
+  PetscInt every = 0, step = -1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-checkpoint_every", &every, nullptr));
+  PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-checkpoint_every %d: expected a number of steps >= 0 (0: checkpoints only when a "
+             "run stops early)",
+             (int)every);
+  run.checkpoint_every = (int)every;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-restart", dir, sizeof(dir), &set));
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-restart_step", &step, &step_set));
+  PetscCheck(!step_set || set, comm, PETSC_ERR_USER_INPUT,
+             "-restart_step %d needs -restart <output directory of the run to continue>",
+             (int)step);
+  PetscCheck(!step_set || step >= 1, comm, PETSC_ERR_USER_INPUT,
+             "-restart_step %d: expected the step number of a checkpoint (>= 1)", (int)step);
+  if (!set) PetscFunctionReturn(0);
+  PetscCheck(dir[0], comm, PETSC_ERR_USER_INPUT,
+             "-restart: expected the output directory of the run to continue");
+  std::error_code failed;
+  PetscCheck(std::filesystem::is_directory(dir, failed), comm, PETSC_ERR_USER_INPUT,
+             "-restart %s: no such directory (expected the output directory of the run to "
+             "continue)",
+             dir);
+  restart->restart = true;
+  restart->dir = dir;
+  restart->step = step_set ? (int)step : -1;
+  PetscFunctionReturn(0);
+}
+
+/// A new run (not a restart) first removes what an earlier run left in its output directory
+/// and this one might not overwrite: field and interface files (when this run writes none),
+/// the time series, and checkpoints (which a later -restart would otherwise mistake for its
+/// own). Only these names are touched.
+PetscErrorCode clearEarlierRun(MPI_Comm comm, const std::string &dir)
+{
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    namespace fs = std::filesystem;
+    std::error_code ignored;
+    for (const char *name :
+         {"fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf", "timeseries.csv"})
+      fs::remove(fs::path(dir) / name, ignored);
+    const fs::path checkpoints = fs::path(dir) / "checkpoints";
+    if (fs::is_directory(checkpoints, ignored)) {
+      std::vector<fs::path> old;
+      for (const auto &entry : fs::directory_iterator(checkpoints, ignored)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("step-", 0) == 0) old.push_back(entry.path());
+      }
+      for (const auto &path : old)
+        fs::remove(path, ignored);
+      fs::remove(checkpoints, ignored); // only if now empty
+    }
+  }
+  PetscCallMPI(MPI_Barrier(comm));
   PetscFunctionReturn(0);
 }
 

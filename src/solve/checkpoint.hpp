@@ -34,5 +34,18 @@ struct CheckpointInfo {
 /// interface history; refuses checkpoints of another partition or scene. Collective.
 PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, CheckpointInfo *info);
 
+/// What a run reads about checkpoints and restarts: -checkpoint_every (into the run),
+/// -restart and -restart_step.
+struct RestartOptions {
+  bool restart = false;
+  std::string dir; ///< -restart: output directory of the interrupted run
+  int step = -1;   ///< -restart_step (-1: the latest checkpoint)
+};
+PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *restart);
+
+/// A new run (not a restart) first removes what an earlier run left in its output directory
+/// that it might not overwrite (see the definition). Collective.
+PetscErrorCode clearEarlierRun(MPI_Comm comm, const std::string &dir);
+
 } // namespace simulation_detail
 } // namespace poroseam

@@ -16,6 +16,7 @@
 
 #include <cstdio>
 #include <petscts.h>
+#include <string>
 #include <vector>
 
 namespace poroseam {
@@ -106,6 +107,12 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
                                PetscReal fnorm, SNESConvergedReason *reason, void *ctx);
 /// SNES initial guess (context: the Run).
 PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx);
+
+// run_ending.cpp: how the run ended.
+
+/// After TSSolve: the error message of a run that did not reach its final time (empty when it
+/// did), writing a checkpoint of its last accepted step if `checkpoints` and none exists.
+PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *message);
 
 } // namespace simulation_detail
 } // namespace poroseam

@@ -382,77 +382,6 @@ PetscErrorCode reportUnusedOptions(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-/// What a run reads about checkpoints and restarts (docs/checkpoints.md).
-struct RestartOptions {
-  bool restart = false;
-  std::string dir; ///< -restart: output directory of the interrupted run
-  int step = -1;   ///< -restart_step (-1: the latest checkpoint)
-};
-
-PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *restart)
-{
-  char dir[PETSC_MAX_PATH_LEN] = "";
-  PetscBool set = PETSC_FALSE, step_set = PETSC_FALSE;
-  PetscInt every = 0, step = -1;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-checkpoint_every", &every, nullptr));
-  PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-checkpoint_every %d: expected a number of steps >= 0 (0: checkpoints only when a "
-             "run stops early)",
-             (int)every);
-  run.checkpoint_every = (int)every;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-restart", dir, sizeof(dir), &set));
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-restart_step", &step, &step_set));
-  PetscCheck(!step_set || set, comm, PETSC_ERR_USER_INPUT,
-             "-restart_step %d needs -restart <output directory of the run to continue>",
-             (int)step);
-  PetscCheck(!step_set || step >= 1, comm, PETSC_ERR_USER_INPUT,
-             "-restart_step %d: expected the step number of a checkpoint (>= 1)", (int)step);
-  if (!set) PetscFunctionReturn(0);
-  PetscCheck(dir[0], comm, PETSC_ERR_USER_INPUT,
-             "-restart: expected the output directory of the run to continue");
-  std::error_code failed;
-  PetscCheck(std::filesystem::is_directory(dir, failed), comm, PETSC_ERR_USER_INPUT,
-             "-restart %s: no such directory (expected the output directory of the run to "
-             "continue)",
-             dir);
-  restart->restart = true;
-  restart->dir = dir;
-  restart->step = step_set ? (int)step : -1;
-  PetscFunctionReturn(0);
-}
-
-/// A new run (not a restart) first removes what an earlier run left in its output directory
-/// and this one might not overwrite: field and interface files (when this run writes none),
-/// the time series, and checkpoints (which a later -restart would otherwise mistake for its
-/// own). Only these names are touched.
-PetscErrorCode clearEarlierRun(MPI_Comm comm, const std::string &dir)
-{
-  PetscMPIInt rank;
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    namespace fs = std::filesystem;
-    std::error_code ignored;
-    for (const char *name :
-         {"fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf", "timeseries.csv"})
-      fs::remove(fs::path(dir) / name, ignored);
-    const fs::path checkpoints = fs::path(dir) / "checkpoints";
-    if (fs::is_directory(checkpoints, ignored)) {
-      std::vector<fs::path> old;
-      for (const auto &entry : fs::directory_iterator(checkpoints, ignored)) {
-        const std::string name = entry.path().filename().string();
-        if (name.rfind("step-", 0) == 0) old.push_back(entry.path());
-      }
-      for (const auto &path : old)
-        fs::remove(path, ignored);
-      fs::remove(checkpoints, ignored); // only if now empty
-    }
-  }
-  PetscCallMPI(MPI_Barrier(comm));
-  PetscFunctionReturn(0);
-}
-
 } // namespace simulation_detail
 
 using namespace simulation_detail;
@@ -641,60 +570,11 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(TSSolve(run.ts, X));
   PetscCall(endLogPhase(run.events.time_stepping));
   PetscCall(run.stop.restore());
-  // How the run ended. It succeeded only if it reached its final time; any other end is an
-  // error that says where it stopped, why, and how to go on.
-  TSConvergedReason reason;
-  double t, t_end;
-  PetscInt max_steps, rejects = 8;
-  PetscCall(TSGetConvergedReason(run.ts, &reason));
-  PetscCall(TSGetTime(run.ts, &t));
-  PetscCall(TSGetMaxTime(run.ts, &t_end));
-  PetscCall(TSGetMaxSteps(run.ts, &max_steps));
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ts_max_reject", &rejects, nullptr));
-  const bool reached =
-      reason >= 0 && t >= t_end - 1e-10 * std::max(std::abs(t_end), run.nominal_dt);
-  std::string checkpoint_note;
-  if (!reached && checkpoints && run.step > 0) {
-    // Nothing is lost: the last accepted step becomes a checkpoint (unless it is one).
-    if (run.checkpoint_step != run.step) {
-      std::string path;
-      PetscCall(writeCheckpoint(run, X, &path));
-      run.checkpoint_step = run.step;
-    }
-    checkpoint_note = "; a checkpoint of step " + std::to_string(run.step) + " is in " +
-                      run.scene.output_dir + "/checkpoints";
-  }
-  const std::string restart_hint =
-      checkpoint_note.empty() ? std::string() : "; continue with -restart " + run.scene.output_dir;
-  char message[2048] = "";
-  if (reason < 0) {
-    std::snprintf(message, sizeof(message),
-                  "step %d failed (%s): %s from t = %g s even after %d cuts of the time step "
-                  "(last tried dt = %g s). Results up to t = %g s are in %s%s; a smaller -ts_dt, "
-                  "more cuts (-ts_max_reject) or other solver options may help",
-                  run.step + 1, TSConvergedReasons[reason],
-                  run.time.adaptive() ? "its attempts were rejected (Newton did not converge or "
-                                        "the error exceeded -ts_rtol)"
-                                      : "Newton did not converge",
-                  t, (int)rejects, run.attempted_dt, t, run.scene.output_dir.c_str(),
-                  checkpoint_note.c_str());
-  } else if (run.stop_signal) {
-    std::snprintf(message, sizeof(message),
-                  "stopped at step %d, t = %g s of %g s, on signal %d (%s). Results up to t = %g "
-                  "s are in %s%s%s",
-                  run.step, t, t_end, run.stop_signal, strsignal(run.stop_signal), t,
-                  run.scene.output_dir.c_str(), checkpoint_note.c_str(), restart_hint.c_str());
-  } else if (!reached) {
-    std::snprintf(message, sizeof(message),
-                  "stopped at step %d, t = %g s, before the final time %g s (-ts_max_time): the "
-                  "step limit -ts_max_steps %d was reached. Results up to t = %g s are in %s%s%s "
-                  "and a larger -ts_max_steps",
-                  run.step, t, t_end, (int)max_steps, t, run.scene.output_dir.c_str(),
-                  checkpoint_note.c_str(), restart_hint.c_str());
-  } else {
+  std::string message; // empty: the run reached its final time
+  PetscCall(describeEnding(run, X, checkpoints, &message));
+  if (message.empty())
     PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
                           MPI_Wtime() - t0, run.scene.output_dir.c_str()));
-  }
   PetscCall(beginLogEvent(run.events.output));
   if (run.csv) std::fclose(run.csv);
   run.csv = nullptr;
@@ -710,7 +590,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(TSDestroy(&run.ts));
   PetscCall(DMDestroy(&run.dm));
   PetscCall(reportUnusedOptions(comm));
-  PetscCheck(message[0] == 0, comm, PETSC_ERR_NOT_CONVERGED, "%s", message);
+  PetscCheck(message.empty(), comm, PETSC_ERR_NOT_CONVERGED, "%s", message.c_str());
   PetscFunctionReturn(0);
 }
 
