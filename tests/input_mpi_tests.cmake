@@ -2,19 +2,25 @@
 # Drivers: tests/input/bad_input.py (one ctest per case), tests/input/user_scenes.py,
 # tests/mpi/mpi_match.py (1 vs 2 ranks), tests/mpi/solver_presets.py (presets vs MUMPS LU).
 
-# Broken scenes: non-zero exit, the error names the offending item, no crash, no hang.
-foreach(case
-    missing_mesh mesh_extension unknown_region unknown_boundary bc_unlisted_boundary
-    missing_E E_zero E_negative nu_half nu_below_minus_one negative_permeability
-    missing_material unknown_material non_numeric probe_wrong_coords probe_outside
-    inverted_element unused_option shell_characters_in_paths help)
-  poroseam_scene_test(input.${case} "input" input/bad_input.py --case ${case})
+# Broken scenes: non-zero exit, one error line that names the offending item, no crash, no
+# hang; and the good runs next to them (valid meshes in every format, shell characters in
+# paths, gmsh dying with a killed run, -malloc_dump clean). One ctest per case of the driver
+# (its --list); cases ending in _np2 run on 2 ranks (label mpi too).
+execute_process(COMMAND ${PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/input/bad_input.py --list
+                OUTPUT_VARIABLE POROSEAM_INPUT_CASES OUTPUT_STRIP_TRAILING_WHITESPACE)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+             ${CMAKE_CURRENT_SOURCE_DIR}/input/bad_input.py)
+string(REPLACE "\n" ";" POROSEAM_INPUT_CASES "${POROSEAM_INPUT_CASES}")
+foreach(case ${POROSEAM_INPUT_CASES})
+  if(case MATCHES "_np2$")
+    poroseam_scene_test(input.${case} "input;mpi" input/bad_input.py --case ${case})
+    set_tests_properties(input.${case} PROPERTIES PROCESSORS 2)
+  else()
+    poroseam_scene_test(input.${case} "input" input/bad_input.py --case ${case})
+  endif()
 endforeach()
-# The same failures on 2 ranks: every rank must exit.
-foreach(case probe_outside_np2 inverted_element_np2 missing_E_np2)
-  poroseam_scene_test(input.${case} "input;mpi" input/bad_input.py --case ${case})
-  set_tests_properties(input.${case} PROPERTIES PROCESSORS 2)
-endforeach()
+set_property(TEST input.malloc_dump_clean input.malloc_dump_clean_interface_np2 APPEND PROPERTY
+             LABELS memory)
 # The example scenes of options/ run from the source tree as their headers say.
 poroseam_scene_test(input.user_scenes "input" input/user_scenes.py)
 

@@ -1,19 +1,77 @@
 // poroseam: hydro-mechanical finite elements for saturated soils, on PETSc.
 //   mpiexec -n 2 poroseam -options_file options/<scene>.opts [PETSc options]
+#include "poroseam/run_options.hpp"
 #include "poroseam/scene.hpp"
 #include "poroseam/simulation.hpp"
 
 #include <cstdio>
+#include <cstring>
 #include <petscsys.h>
+#include <string>
+#include <sys/stat.h>
 
 static const char help[] = "poroseam: Biot consolidation with zero-thickness hydro-mechanical "
                            "interfaces.\nUsage: poroseam -options_file options/<scene>.opts\n";
 
+namespace {
+
+/// Set when an error that every rank meets together (a bad option value found by PETSc's
+/// parser) has been reported in one line: the run then ends cleanly, not with MPI_Abort.
+bool collective_input_error = false;
+
+int worldRank()
+{
+  int initialized = 0, rank = 0;
+  MPI_Initialized(&initialized);
+  if (initialized) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+/// PETSc's parse errors of an option value name the value only ("Input string abc has no
+/// integer value"): find the option that has it. Returns "" for other errors.
+std::string optionParseError(const char *mess)
+{
+  if (!mess) return "";
+  const std::string m = mess;
+  std::string value, expected;
+  const std::string input = "Input string ";
+  if (m.rfind(input, 0) == 0) {
+    const auto end = m.find(" has no ", input.size());
+    if (end == std::string::npos) return "";
+    value = m.substr(input.size(), end - input.size());
+    expected = m.find("integer", end) != std::string::npos ? "an integer" : "a number";
+  } else if (m.rfind("Unknown logical value: ", 0) == 0) {
+    value = m.substr(std::strlen("Unknown logical value: "));
+    expected = "true or false";
+  } else if (m.find("string of length zero has no numerical value") != std::string::npos) {
+    return "an option that needs a number was given without one";
+  } else {
+    return "";
+  }
+  while (!value.empty() && value.back() == ' ')
+    value.pop_back();
+  const std::string names = poroseam::optionsWithValue(value);
+  return (names.empty() ? "an option" : "option " + names) + " " + value + ": expected " +
+         expected;
+}
+
 /// Bad input and a run that cannot go on are the user's to fix, not ours to debug: say what
 /// is wrong in one line, without PETSc's traceback. Everything else keeps the traceback.
-static PetscErrorCode reportError(MPI_Comm comm, int line, const char *func, const char *file,
-                                  PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx)
+PetscErrorCode reportError(MPI_Comm comm, int line, const char *func, const char *file,
+                           PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx)
 {
+  if (p == PETSC_ERROR_INITIAL) {
+    const std::string parse = optionParseError(mess);
+    if (!parse.empty()) {
+      // Options are the same on every rank and read in collective set-up calls: every rank
+      // meets this error at the same point. One line, from rank 0.
+      collective_input_error = true;
+      if (worldRank() == 0) std::fprintf(stderr, "poroseam: error: %s\n", parse.c_str());
+      return n;
+    }
+  } else if (collective_input_error) {
+    return n; // the same error on its way up
+  }
   if (n != PETSC_ERR_USER_INPUT && n != PETSC_ERR_NOT_CONVERGED)
     return PetscTraceBackErrorHandler(comm, line, func, file, n, p, mess, ctx);
   if (p == PETSC_ERROR_INITIAL) {
@@ -24,8 +82,64 @@ static PetscErrorCode reportError(MPI_Comm comm, int line, const char *func, con
   return n;
 }
 
+/// The -options_file names on the command line must be readable files: PETSc would stop in
+/// PetscInitialize with a 30-line traceback. Returns the one-line error, or "".
+std::string checkOptionsFiles(int argc, char **argv)
+{
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "-options_file") != 0) continue;
+    if (i + 1 >= argc || argv[i + 1][0] == '\0')
+      return "option -options_file has no value: name a scene file (options/<scene>.opts)";
+    const std::string path = argv[i + 1];
+    struct stat st;
+    if (stat(path.c_str(), &st) != 0)
+      return "options file '" + path + "' (option -options_file) does not exist";
+    if (S_ISDIR(st.st_mode))
+      return "options file '" + path + "' (option -options_file) is a directory: expected a " +
+             "scene file (options/<scene>.opts)";
+    if (FILE *f = std::fopen(path.c_str(), "r"))
+      std::fclose(f);
+    else
+      return "options file '" + path + "' (option -options_file) cannot be read";
+  }
+  return "";
+}
+
+/// After an error inside a log phase (a stage pushed, events begun): leave the stages, and
+/// do not print -log_view's tables, whose nested formats would stop with a follow-up error
+/// about unbalanced events ("Entry 7 is larger than number of parents") that hides the real
+/// one. Returns whether a stage was still open.
+bool leaveLogPhases()
+{
+  PetscStageLog log = nullptr;
+  int stage = -1;
+  bool open = false;
+  if (PetscLogGetStageLog(&log) || !log) return false;
+  while (!PetscStageLogGetCurrent(log, &stage) && stage > 0) {
+    if (PetscLogStagePop()) break;
+    open = true;
+  }
+  if (open) {
+    for (const char *name : {"-log_view", "-log_view_memory", "-log_view_gpu_time", "-log_all",
+                             "-log_trace", "-log_summary"})
+      PetscOptionsClearValue(nullptr, name);
+  }
+  return open;
+}
+
+} // namespace
+
 int main(int argc, char **argv)
 {
+  // MPI first, so that an unreadable -options_file is reported once, by rank 0, and every
+  // rank finishes MPI cleanly (PETSc then leaves MPI_Finalize to us).
+  MPI_Init(&argc, &argv);
+  const std::string options_error = checkOptionsFiles(argc, argv);
+  if (!options_error.empty()) {
+    if (worldRank() == 0) std::fprintf(stderr, "poroseam: error: %s\n", options_error.c_str());
+    MPI_Finalize();
+    return 1;
+  }
   PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
   PetscCall(PetscPushErrorHandler(reportError, nullptr));
   PetscBool help_requested = PETSC_FALSE, has_mesh = PETSC_FALSE;
@@ -33,12 +147,21 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-mesh", &has_mesh));
   if (help_requested) poroseam::printSceneHelp(PETSC_COMM_WORLD);
   PetscErrorCode error = 0;
-  if (!help_requested || has_mesh) error = poroseam::runSimulation(PETSC_COMM_WORLD);
-  if (error && error != PETSC_ERR_USER_INPUT && error != PETSC_ERR_NOT_CONVERGED) {
+  if (!help_requested || has_mesh) {
+    error = poroseam::checkNumericOptions(PETSC_COMM_WORLD);
+    if (!error) error = poroseam::checkOutputDirectory(PETSC_COMM_WORLD);
+    if (!error) error = poroseam::runSimulation(PETSC_COMM_WORLD);
+  }
+  const bool collective =
+      error == PETSC_ERR_USER_INPUT || error == PETSC_ERR_NOT_CONVERGED || collective_input_error;
+  if (error && !collective) {
     // An internal error may be on one rank only: the others cannot be waited for.
     MPI_Abort(PETSC_COMM_WORLD, (int)error);
   }
   // Input errors and failed runs are detected on every rank together: finish cleanly.
+  if (error) leaveLogPhases();
+  PetscCall(PetscPopErrorHandler()); // what main pushed (-malloc_dump: nothing left)
   PetscCall(PetscFinalize());
+  MPI_Finalize();
   return error ? 1 : 0;
 }

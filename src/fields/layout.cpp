@@ -104,6 +104,20 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
     }
     PetscCall(DMPlexLabelComplete(dm, label));
   }
+  // A prescribed interface pressure needs an interface with flow that reaches the boundary.
+  for (const auto &bc : scene.conditions) {
+    if (bc.kind != BcKind::interface_pressure) continue;
+    std::vector<PetscInt> edges;
+    PetscCall(lateralEdgesOnBoundary(dm, bc.boundary, edges));
+    long mine = (long)edges.size(), total = 0;
+    PetscCallMPI(MPI_Allreduce(&mine, &total, 1, MPI_LONG, MPI_SUM,
+                               PetscObjectComm((PetscObject)dm)));
+    PetscCheck(total > 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT,
+               "%s: no interface with flow (-interface_<i>_flow) meets boundary '%s', so there "
+               "is no interface pressure there to prescribe; name a boundary that an "
+               "interface with flow ends on",
+               bc.option.c_str(), bc.boundary.c_str());
+  }
   PetscFunctionReturn(0);
 }
 

@@ -2,9 +2,12 @@
 #include "poroseam/external_program.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/mesh.hpp"
+#include "poroseam/msh_check.hpp"
 #include "poroseam/partition.hpp"
 #include "poroseam/reference_element.hpp"
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -26,40 +29,37 @@ bool endsWith(const std::string &s, const std::string &suffix)
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-/// Reads the $PhysicalNames block of a Gmsh file: lines `dim tag "name"`.
-std::string readPhysicalNames(const std::string &path, std::vector<PhysicalName> &names)
+/// Runs gmsh on a .geo at a size factor, writing `msh` (MSH 2.2 ASCII); "" or what failed.
+std::string runGmsh(const std::string &geo, double size_factor, const std::string &msh,
+                    const std::string &log)
 {
-  std::ifstream in(path);
-  if (!in) return "cannot open mesh file '" + path + "'";
-  std::string line;
-  bool first = true;
-  while (std::getline(in, line)) {
-    if (first && line.rfind("$MeshFormat", 0) != 0)
-      return "mesh file '" + path + "' is not a Gmsh ASCII .msh file (no $MeshFormat header)";
-    first = false;
-    if (line.rfind("$PhysicalNames", 0) != 0) continue;
-    int count = 0;
-    std::getline(in, line);
-    std::istringstream(line) >> count;
-    for (int i = 0; i < count && std::getline(in, line); ++i) {
-      PhysicalName n;
-      std::istringstream fields(line);
-      fields >> n.dim >> n.tag;
-      const auto a = line.find('"'), b = line.rfind('"');
-      if (a == std::string::npos || b <= a)
-        return "mesh file '" + path + "': bad $PhysicalNames line";
-      n.name = line.substr(a + 1, b - a - 1);
-      names.push_back(n);
-    }
-    return "";
-  }
-  return "mesh file '" + path +
-         "' has no $PhysicalNames: name the regions and boundaries as Gmsh physical groups";
+  std::ostringstream factor;
+  factor.precision(17);
+  factor << size_factor;
+  // An argument vector, no shell: paths with quotes or $(...) are only names.
+  const std::string why = runProgram(
+      {"gmsh", "-3", "-v", "1", "-format", "msh22", "-clscale", factor.str(), "-o", msh, geo}, log);
+  if (!why.empty() || !fileExists(msh))
+    return "gmsh failed to mesh '" + geo + "' (" + (why.empty() ? "no mesh written" : why) +
+           "; see " + log + ")";
+  return "";
 }
 
-/// Meshes a .geo with gmsh into work_dir; returns the .msh path or an error message.
-std::string meshGeometry(const std::string &geo, double size_factor, const std::string &work_dir,
-                         std::string &msh)
+std::string formatCount(double n)
+{
+  std::ostringstream s;
+  s.precision(n < 1e6 ? 6 : 2);
+  if (n >= 1e6) s << std::scientific;
+  s << n;
+  return s.str();
+}
+
+/// Meshes a .geo with gmsh into work_dir; returns the .msh path or an error message. Below
+/// a size factor of 0.5 the element count is estimated first from a mesh at factor 1 (cells
+/// x factor^-dim; gmsh's -clscale scales every size), and a mesh above `max_elements` is
+/// refused before gmsh spends minutes and gigabytes on it.
+std::string meshGeometry(const std::string &geo, double size_factor, long max_elements,
+                         const std::string &work_dir, std::string &msh)
 {
   std::string stem = geo.substr(geo.find_last_of('/') + 1);
   stem = stem.substr(0, stem.size() - 4);
@@ -67,16 +67,46 @@ std::string meshGeometry(const std::string &geo, double size_factor, const std::
   std::filesystem::create_directories(work_dir, failed);
   if (failed) return "cannot create directory '" + work_dir + "': " + failed.message();
   msh = work_dir + "/" + stem + ".msh";
-  std::ostringstream factor;
-  factor.precision(17);
-  factor << size_factor;
-  const std::string log = work_dir + "/gmsh.log";
-  const std::string why = runProgram(
-      {"gmsh", "-3", "-v", "1", "-format", "msh22", "-clscale", factor.str(), "-o", msh, geo}, log);
-  if (!why.empty() || !fileExists(msh))
-    return "gmsh failed to mesh '" + geo + "' (" + (why.empty() ? "no mesh written" : why) +
-           "; see " + log + ")";
-  return "";
+  if (size_factor < 0.5) {
+    const std::string probe = work_dir + "/" + stem + ".factor1.msh";
+    std::string why = runGmsh(geo, 1.0, probe, work_dir + "/gmsh.log");
+    if (!why.empty()) return why;
+    std::vector<PhysicalName> names;
+    MshSummary s;
+    why = checkGmshFile(probe, names, s);
+    std::filesystem::remove(probe, failed);
+    if (!why.empty()) return why;
+    const double estimate = (double)s.cells * std::pow(1.0 / size_factor, s.dim);
+    if (estimate > (double)max_elements) {
+      std::ostringstream f;
+      f << size_factor;
+      return "-mesh_size_factor " + f.str() + " would make about " + formatCount(estimate) +
+             " elements of dimension " + std::to_string(s.dim) + " from '" + geo + "' (" +
+             std::to_string(s.cells) + " at factor 1), more than -mesh_max_elements " +
+             std::to_string(max_elements) + ": give a larger factor, or raise the limit if " +
+             "the machine can take it";
+    }
+  }
+  return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log");
+}
+
+/// -mesh_max_elements: the largest mesh (cells of the top dimension) poroseam makes or reads.
+PetscErrorCode readMaxElements(MPI_Comm comm, long *max_elements)
+{
+  char buffer[64] = "";
+  PetscBool set = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  *max_elements = 2000000;
+  PetscCall(
+      PetscOptionsGetString(nullptr, nullptr, "-mesh_max_elements", buffer, sizeof buffer, &set));
+  if (!set) PetscFunctionReturn(0);
+  char *end = nullptr;
+  const double v = std::strtod(buffer, &end);
+  PetscCheck(end != buffer && *end == '\0' && v >= 1 && v == std::floor(v) && v < 9e18, comm,
+             PETSC_ERR_USER_INPUT, "option -mesh_max_elements %s: expected a whole number >= 1",
+             buffer[0] ? buffer : "(no value)");
+  *max_elements = (long)v;
+  PetscFunctionReturn(0);
 }
 
 } // namespace
@@ -89,16 +119,31 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   // Rank 0 checks and (for .geo) meshes the file; the outcome is broadcast as text.
+  long max_elements;
+  PetscCall(readMaxElements(comm, &max_elements));
   std::string error, msh = file;
   std::vector<PhysicalName> found;
   if (rank == 0) {
-    if (!fileExists(file))
-      error = "mesh file '" + file + "' (option -mesh) does not exist";
+    struct stat st;
+    const std::string what = "mesh file '" + file + "' (option -mesh)";
+    if (stat(file.c_str(), &st) != 0)
+      error = what + " does not exist";
+    else if (S_ISDIR(st.st_mode))
+      error = what + " is a directory: expected a Gmsh .msh or .geo file";
+    else if (!S_ISREG(st.st_mode))
+      error = what + " is not a regular file: expected a Gmsh .msh or .geo file";
     else if (endsWith(file, ".geo"))
-      error = meshGeometry(file, size_factor, work_dir, msh);
+      error = meshGeometry(file, size_factor, max_elements, work_dir, msh);
     else if (!endsWith(file, ".msh"))
-      error = "mesh file '" + file + "' (option -mesh): expected a Gmsh .msh or .geo file";
-    if (error.empty()) error = readPhysicalNames(msh, found);
+      error = what + ": expected a Gmsh .msh or .geo file";
+    // Every .msh is checked before PETSc's reader sees it (that reader trusts the file).
+    MshSummary summary;
+    if (error.empty()) error = checkGmshFile(msh, found, summary);
+    if (error.empty() && summary.cells > max_elements)
+      error = "mesh file '" + msh + "' has " + std::to_string(summary.cells) +
+              " elements of dimension " + std::to_string(summary.dim) +
+              ", more than -mesh_max_elements " + std::to_string(max_elements) +
+              " (raise the limit if the machine can take it)";
   }
   std::ostringstream packed;
   packed << error.size() << '\n' << error << '\n' << msh << '\n' << found.size() << '\n';

@@ -95,6 +95,57 @@ PetscErrorCode markBuriedTips(DM dm, DMLabel faces, DMLabel buried)
   PetscFunctionReturn(0);
 }
 
+/// Every face of an interface must have a cell on each side: a face group on the outer
+/// boundary of the mesh would give cohesive cells with one side (and meaningless forces).
+/// Collective; the mesh is still whole on rank 0 here.
+PetscErrorCode checkInterfacesInside(DM dm, const Scene &scene, DMLabel faceSets)
+{
+  MPI_Comm comm;
+  std::string error;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)dm, &comm));
+  for (const auto &in : scene.interfaces)
+    for (size_t s = 0; s < in.tags.size() && error.empty(); ++s) {
+      IS is = nullptr;
+      PetscCall(DMLabelGetStratumIS(faceSets, in.tags[s], &is));
+      if (!is) continue;
+      const PetscInt *idx;
+      PetscInt n, outer = 0, total = 0;
+      double where[3] = {0, 0, 0};
+      PetscCall(ISGetLocalSize(is, &n));
+      PetscCall(ISGetIndices(is, &idx));
+      PetscInt fStart, fEnd;
+      PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
+      for (PetscInt k = 0; k < n; ++k) {
+        if (idx[k] < fStart || idx[k] >= fEnd) continue; // not a face (a vertex of a group)
+        PetscInt support;
+        PetscCall(DMPlexGetSupportSize(dm, idx[k], &support));
+        ++total;
+        if (support < 2 && outer++ == 0) {
+          std::vector<double> x;
+          PetscCall(closureCoordinates(dm, idx[k], x));
+          PetscInt dim;
+          PetscCall(DMGetDimension(dm, &dim));
+          centroid(x, (int)dim, where);
+        }
+      }
+      PetscCall(ISRestoreIndices(is, &idx));
+      PetscCall(ISDestroy(&is));
+      if (outer) {
+        std::ostringstream msg;
+        msg << "interface '" << in.name << "': " << outer << " of the " << total
+            << " faces of its face group '" << in.surfaces[s]
+            << "' (-interface_" << in.name << "_surfaces) lie on the outer boundary of the "
+            << "mesh, with a cell on one side only (the first near (" << where[0] << ", "
+            << where[1] << ", " << where[2] << ")): an interface must lie inside the mesh, "
+            << "between two cells; for a boundary use -boundaries";
+        error = msg.str();
+      }
+    }
+  PetscCall(checkOnAllRanks(comm, error));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
@@ -129,6 +180,7 @@ PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
       PetscCall(ISDestroy(&is));
     }
   PetscCall(DMPlexLabelComplete(*dm, faces));
+  PetscCall(checkInterfacesInside(*dm, scene, faceSets));
 
   // The sequence of DMPlexCreateHybridMesh, with faces marked explicitly (finding them from
   // vertices picks wrong faces in thin parts; see shared/notes/petsc-3.18.md).

@@ -29,6 +29,23 @@ PetscErrorCode getStringList(const std::string &option, std::vector<std::string>
   PetscFunctionReturn(0);
 }
 
+/// A list option names each item once, and no item is empty ("-regions soil,,rock").
+PetscErrorCode checkListNames(MPI_Comm comm, const std::string &option,
+                              const std::vector<std::string> &items)
+{
+  std::set<std::string> seen;
+  PetscFunctionBeginUser;
+  for (const auto &item : items) {
+    PetscCheck(!item.empty(), comm, PETSC_ERR_USER_INPUT,
+               "option %s has an empty name in its list: expected comma-separated names",
+               option.c_str());
+    PetscCheck(seen.insert(item).second, comm, PETSC_ERR_USER_INPUT,
+               "option %s names '%s' twice: each name must appear once", option.c_str(),
+               item.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
 /// Parses a number, accepting what PETSc accepts for reals (1e7, 2.5, -3); returns false
 /// for anything else so that the error can name the option.
 bool parseNumber(const std::string &text, double *value)
@@ -286,6 +303,15 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
       PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
                  "%sflux: the scene has no pressure unknowns (drained, or no biot region)",
                  p.c_str());
+      // A prescribed pressure fixes the water at the boundary: a flux there would be ignored.
+      const bool pressure =
+          std::any_of(out.begin(), out.end(), [&](const BoundaryCondition &c) {
+            return c.boundary == b.name && c.kind == BcKind::pressure;
+          });
+      PetscCheck(!pressure, comm, PETSC_ERR_USER_INPUT,
+                 "%sflux and %sp on the same boundary '%s': a prescribed pressure leaves no "
+                 "flux to prescribe; give one of them (or split the boundary in the mesh)",
+                 p.c_str(), p.c_str(), b.name.c_str());
       BoundaryCondition bc;
       bc.kind = BcKind::flux;
       bc.value = {v};
@@ -304,6 +330,7 @@ PetscErrorCode readInterface(MPI_Comm comm, const std::vector<PhysicalName> &nam
   PetscFunctionBeginUser;
   PetscCall(getStringList(p + "surfaces", i.surfaces, &set));
   if (!set) i.surfaces = {i.name};
+  PetscCall(checkListNames(comm, p + "surfaces", i.surfaces));
   for (const auto &surface : i.surfaces) {
     int tag;
     PetscCall(findPhysical(comm, names, dim - 1, surface, (p + "surfaces").c_str(),
@@ -506,6 +533,7 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   PetscCheck(set && !list.empty(), comm, PETSC_ERR_USER_INPUT,
              "missing option -regions: list the mesh regions (cell physical names: %s)",
              joinNames(names, dim).c_str());
+  PetscCall(checkListNames(comm, "-regions", list));
   scene.regions.clear();
   for (const auto &name : list) {
     Region r;
@@ -517,14 +545,25 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
     PetscCall(readRegion(comm, r, scene.gravity > 0.0, scene.drained));
 
   PetscCall(getStringList("-interfaces", list, &set));
+  PetscCall(checkListNames(comm, "-interfaces", list));
   scene.interfaces.clear();
   for (const auto &name : list) {
     Interface i;
     i.name = name;
     PetscCall(readInterface(comm, names, dim, scene, i));
+    // A face group is split once: it cannot belong to two interfaces.
+    for (const auto &other : scene.interfaces)
+      for (const auto &surface : i.surfaces)
+        PetscCheck(std::find(other.surfaces.begin(), other.surfaces.end(), surface) ==
+                       other.surfaces.end(),
+                   comm, PETSC_ERR_USER_INPUT,
+                   "interfaces '%s' and '%s' both use the face group '%s' "
+                   "(-interface_<i>_surfaces): a face group belongs to one interface",
+                   other.name.c_str(), i.name.c_str(), surface.c_str());
     scene.interfaces.push_back(i);
   }
   PetscCall(getStringList("-boundaries", list, &set));
+  PetscCall(checkListNames(comm, "-boundaries", list));
   scene.boundaries.clear();
   for (const auto &name : list) {
     Boundary b;

@@ -13,6 +13,7 @@
 #include "poroseam/nullspace.hpp"
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
+#include "poroseam/run_options.hpp"
 #include "poroseam/scene.hpp"
 #include "poroseam/solver_preset.hpp"
 #include "poroseam/time_integration.hpp"
@@ -480,6 +481,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(registerVertexBlocksPC());
   PetscCall(run.time.beforeOptions(run.ts));
   PetscCall(TSSetFromOptions(run.ts));
+  PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
   {
     KSP ksp;

@@ -21,8 +21,10 @@ command-line options (which override the file) or drops options from a copy of t
 
 import argparse
 import os
+import random
 import re
 import shutil
+import struct
 import subprocess
 import sys
 import time
@@ -32,6 +34,8 @@ SOURCE = os.environ.get("POROSEAM_SOURCE", os.path.dirname(os.path.dirname(HERE)
 EXE = os.environ.get("POROSEAM_EXE", os.path.join(SOURCE, "build", "poroseam"))
 OUTPUT_ROOT = os.environ.get("POROSEAM_TEST_OUTPUT", "/tmp/poroseam-test-output")
 BASE_SCENE = os.path.join(SOURCE, "tests", "verification", "terzaghi_2d.opts")
+# a joint with flow across a 2-layer column (meshes/joint_column_2d.geo): interface cases
+JOINT_SCENE = os.path.join(SOURCE, "tests", "hydraulics", "joint_column_2d.opts")
 TIMEOUT = 60.0        # a run still going after this is a hang
 MAX_SECONDS = 15.0    # "finishes in seconds" (the mesh is meshed by gmsh first)
 # crash signatures; "signal" as a word (PETSc's -help lists "-no_signal_handler", which is fine)
@@ -73,6 +77,123 @@ CASES = {
     "inverted_element_np2": dict(args=["-mesh", "meshes/bad_inverted.msh"],
                                  expect=["inverted element"], ranks=2),
     "missing_E_np2": dict(drop=["-region_soil_E"], expect=["-region_soil_E"], ranks=2),
+    # --- malformed .msh files (written by msh_fixture below, into the case's directory): PETSc's
+    # reader trusts the file (a missing node crashed it with SIGSEGV); poroseam checks it first
+    # and names the file
+    "msh22_missing_node": dict(msh=("22", "missing_node"), expect=["bad.msh", "refers to node 9"]),
+    "msh41_missing_node": dict(msh=("41", "missing_node"), expect=["bad.msh", "refers to node 9"]),
+    "msh41_binary_missing_node": dict(msh=("41b", "missing_node"),
+                                      expect=["bad.msh", "refers to node 9"]),
+    "msh22_binary_missing_node": dict(msh=("22b", "missing_node"),
+                                      expect=["bad.msh", "refers to node 9"]),
+    "msh22_truncated_elements": dict(msh=("22", "truncate_elements"), expect=["bad.msh", "truncated"]),
+    "msh22_truncated_nodes": dict(msh=("22", "truncate_nodes"), expect=["bad.msh", "truncated"]),
+    "msh41_binary_truncated": dict(msh=("41b", "truncate_nodes"), expect=["bad.msh", "truncated"]),
+    "msh22_node_count_high": dict(msh=("22", "node_count_high"),
+                                  expect=["bad.msh", "'$EndNodes' where a node tag was expected"]),
+    "msh22_element_count_low": dict(msh=("22", "element_count_low"),
+                                    expect=["bad.msh", "expected $EndElements"]),
+    "msh41_node_count_mismatch": dict(msh=("41", "node_count_high"),
+                                      expect=["bad.msh", "hold 4 nodes, 6 declared"]),
+    "msh_garbage": dict(msh=("22", "garbage"), expect=["bad.msh", "does not start with $MeshFormat"]),
+    "msh_empty": dict(msh=("22", "empty"), expect=["bad.msh", "the file is empty"]),
+    "msh_geo_text": dict(msh=("22", "geo_text"), expect=["bad.msh", "does not start with $MeshFormat"]),
+    "msh_version_3": dict(msh=("22", "version_3"), expect=["bad.msh", "MSH format 3", "msh22"]),
+    "msh_second_order": dict(msh=("22", "second_order"),
+                             expect=["bad.msh", "element type 9", "-order 1"]),
+    "msh_no_physical_names": dict(msh=("22", "no_physical_names"),
+                                  expect=["bad.msh", "no $PhysicalNames"]),
+    "msh_nan_coordinate": dict(msh=("22", "nan"), expect=["bad.msh", "not a finite number"]),
+    "msh_duplicate_node": dict(msh=("22", "duplicate_node"), expect=["bad.msh", "node 3 is defined twice"]),
+    "msh41_unknown_entity": dict(msh=("41", "unknown_entity"),
+                                 expect=["bad.msh", "entity 7", "not in $Entities"]),
+    "mesh_directory": dict(args=["-mesh", "{out}/dir.msh"], mkdir="dir.msh",
+                           expect=["dir.msh", "is a directory"]),
+    "geo_syntax_error": dict(args=["-mesh", "{out}/broken.geo"], write=("broken.geo", "Point(1) = {0, 0;\n"),
+                             expect=["gmsh failed to mesh", "broken.geo", "gmsh.log"]),
+    # --- scene lists and conditions
+    "duplicate_regions": dict(args=["-regions", "soil,soil"], expect=["-regions", "'soil' twice"]),
+    "duplicate_boundaries": dict(args=["-boundaries", "top,bottom,left,right,top"],
+                                 expect=["-boundaries", "'top' twice"]),
+    "duplicate_interfaces": dict(scene=JOINT_SCENE, args=["-interfaces", "joint,joint"],
+                                 expect=["-interfaces", "'joint' twice"]),
+    "duplicate_surfaces": dict(scene=JOINT_SCENE, args=["-interface_joint_surfaces", "joint,joint"],
+                               expect=["-interface_joint_surfaces", "'joint' twice"]),
+    "surface_in_two_interfaces": dict(
+        scene=JOINT_SCENE, args=["-interfaces", "joint,other", "-interface_other_surfaces", "joint",
+                                 "-interface_other_side1", "lower", "-interface_other_KN", "1e12",
+                                 "-interface_other_KT", "1e12", "-interface_other_friction", "0.5"],
+        expect=["'joint' and 'other'", "face group 'joint'"]),
+    "interface_on_outer_boundary": dict(scene=JOINT_SCENE, args=["-interface_joint_surfaces", "top", "-interface_joint_side1", "upper"],
+                                        expect=["interface 'joint'", "'top'", "outer boundary"]),
+    "p3_boundary_not_met": dict(scene=JOINT_SCENE, args=["-bc_top_p3", "0"],
+                                expect=["-bc_top_p3", "no interface with flow", "'top'"]),
+    "flux_and_pressure": dict(args=["-bc_top_flux", "1e-6"], expect=["-bc_top_flux", "-bc_top_p"]),
+    # --- numeric options: the message names the option, not only the value
+    "ts_max_steps_abc": dict(args=["-ts_max_steps", "abc"], expect=["-ts_max_steps abc", "integer"]),
+    "ts_dt_abc": dict(args=["-ts_dt", "abc"], expect=["-ts_dt abc", "number"]),
+    "ts_max_time_abc": dict(args=["-ts_max_time", "1x"], expect=["-ts_max_time 1x", "number"]),
+    "snes_max_it_real": dict(args=["-snes_max_it", "2.5"], expect=["-snes_max_it 2.5", "integer"]),
+    "prefixed_ksp_rtol_abc": dict(args=["-fieldsplit_pressure_ksp_rtol", "tight"],
+                                  expect=["-fieldsplit_pressure_ksp_rtol tight", "number"]),
+    # not in poroseam's table: PETSc's parser meets it inside the solve (inside log stages and
+    # events); the error handler finds the option by its value
+    "mumps_icntl_abc": dict(args=["-mat_mumps_icntl_14", "lots"],
+                            expect=["-mat_mumps_icntl_14 lots", "integer"]),
+    "output_fields_every_x": dict(args=["-output_fields_every", "x"],
+                                  expect=["-output_fields_every x"]),
+    "solver_auto_threshold_abc": dict(args=["-solver_auto_threshold", "many"],
+                                      expect=["-solver_auto_threshold many", "integer"]),
+    "mesh_size_factor_abc": dict(args=["-mesh_size_factor", "half"], expect=["-mesh_size_factor half"]),
+    "ts_max_time_zero": dict(args=["-ts_max_time", "0"], expect=["-ts_max_time 0", "> 0"]),
+    "ts_max_time_negative": dict(args=["-ts_max_time", "-5"], expect=["-ts_max_time -5", "> 0"]),
+    "ts_max_steps_zero": dict(args=["-ts_max_steps", "0"], expect=["-ts_max_steps 0", "> 0"]),
+    "ts_max_reject_negative": dict(args=["-ts_max_reject", "-1"], expect=["-ts_max_reject -1", ">= 0"]),
+    "ts_dt_zero": dict(args=["-ts_dt", "0"], expect=["-ts_dt 0", "> 0"]),
+    # --- mesh size: estimated before gmsh runs, limit -mesh_max_elements
+    "mesh_size_factor_absurd": dict(args=["-mesh_size_factor", "0.0005"],
+                                    expect=["-mesh_size_factor 0.0005", "-mesh_max_elements"]),
+    "mesh_max_elements_exceeded": dict(msh=("22", "good"), args=["-mesh_max_elements", "1"],
+                                       expect=["bad.msh", "has 2 elements", "-mesh_max_elements 1"]),
+    "mesh_max_elements_abc": dict(args=["-mesh_max_elements", "lots"],
+                                  expect=["-mesh_max_elements lots", "whole number"]),
+    # --- files and directories
+    "missing_options_file": dict(raw=["-options_file", "{out}/nope.opts"],
+                                 expect=["nope.opts", "-options_file", "does not exist"]),
+    "options_file_directory": dict(raw=["-options_file", "{out}"],
+                                   expect=["-options_file", "is a directory"]),
+    "output_dir_under_file": dict(args=["-output_dir", "{out}/afile/results"], write=("afile", "x"),
+                                  expect=["afile/results", "-output_dir", "Not a directory"]),
+    "output_dir_is_file": dict(args=["-output_dir", "{out}/afile"], write=("afile", "x"),
+                               expect=["afile", "-output_dir"]),
+    # an error inside a log stage with a nested -log_view format: only the real error
+    "error_in_log_stage": dict(args=["-regions", "soil,rock", "-log_view", ":{out}/log.xml:ascii_xml"],
+                               expect=["'rock'"], absent_text=["parents", "Entry"]),
+    "error_in_solve_log_events": dict(
+        args=["-mat_mumps_icntl_14", "lots", "-log_view", ":{out}/log.txt:ascii_flamegraph"],
+        expect=["-mat_mumps_icntl_14 lots"], absent_text=["parents", "Entry", "unbalanced"]),
+    # the same on 2 ranks: one line, every rank exits
+    "msh22_missing_node_np2": dict(msh=("22", "missing_node"), expect=["bad.msh", "refers to node 9"],
+                                   ranks=2),
+    "msh_garbage_np2": dict(msh=("22", "garbage"), expect=["bad.msh", "$MeshFormat"], ranks=2),
+    "mesh_directory_np2": dict(args=["-mesh", "{out}/dir.msh"], mkdir="dir.msh",
+                               expect=["dir.msh", "is a directory"], ranks=2),
+    "interface_on_outer_boundary_np2": dict(scene=JOINT_SCENE, args=["-interface_joint_surfaces", "top", "-interface_joint_side1", "upper"],
+                                            expect=["interface 'joint'", "outer boundary"], ranks=2),
+    "p3_boundary_not_met_np2": dict(scene=JOINT_SCENE, args=["-bc_top_p3", "0"],
+                                    expect=["-bc_top_p3", "no interface with flow"], ranks=2),
+    "duplicate_regions_np2": dict(args=["-regions", "soil,soil"], expect=["'soil' twice"], ranks=2),
+    "ts_max_steps_abc_np2": dict(args=["-ts_max_steps", "abc"], expect=["-ts_max_steps abc"], ranks=2),
+    "mumps_icntl_abc_np2": dict(args=["-mat_mumps_icntl_14", "lots"],
+                                expect=["-mat_mumps_icntl_14 lots"], ranks=2),
+    "ts_max_reject_negative_np2": dict(args=["-ts_max_reject", "-1"], expect=["-ts_max_reject -1"],
+                                       ranks=2),
+    "missing_options_file_np2": dict(raw=["-options_file", "{out}/nope.opts"],
+                                     expect=["nope.opts", "does not exist"], ranks=2),
+    "output_dir_under_file_np2": dict(args=["-output_dir", "{out}/afile/results"], write=("afile", "x"),
+                                      expect=["afile/results", "Not a directory"], ranks=2),
+    "error_in_log_stage_np2": dict(args=["-regions", "soil,rock", "-log_view", ":{out}/log.xml:ascii_xml"],
+                                   expect=["'rock'"], absent_text=["parents", "Entry"], ranks=2),
     # good runs
     "unused_option": dict(args=["-not_an_option", "3", "-ts_max_time", "0.4"], ok=True,
                           expect=["-not_an_option", "never used"]),
@@ -84,10 +205,217 @@ CASES = {
         copy=("meshes/terzaghi_column_2d.geo", "it's $(touch pwned)/column.geo"), ok=True,
         expect=["1 steps"], absent=["pwned", "{out}/pwned", "{out}/it's $(touch pwned)/pwned"],
         present=["{out}/it's $(touch pwned)/results/timeseries.csv"]),
+    # an output directory whose name is a shell command: created as a literal name, nothing run
+    "shell_output_dir": dict(args=["-output_dir", "{out}/o'; touch X; echo '", "-ts_max_steps", "1"],
+                             ok=True, expect=["1 steps"], absent=["X", "{out}/X", "{out}/o'; touch X; echo '/X"],
+                             present=["{out}/o'; touch X; echo '/timeseries.csv"]),
+    "shell_output_dir_backticks": dict(
+        args=["-output_dir", "{out}/a`touch Y`|b&c;$(touch Z) >w", "-ts_max_steps", "1"], ok=True,
+        expect=["1 steps"], absent=["Y", "Z", "w", "{out}/Y", "{out}/Z", "{out}/w"],
+        present=["{out}/a`touch Y`|b&c;$(touch Z) >w/timeseries.csv"]),
+    # valid meshes in every format the checker reads: it must not refuse them
+    "msh22_good": dict(msh=("22", "good"), args=["-ts_max_steps", "1"], ok=True, expect=["1 steps"]),
+    "msh41_good": dict(msh=("41", "good"), args=["-ts_max_steps", "1"], ok=True, expect=["1 steps"]),
+    "msh41_binary_good": dict(msh=("41b", "good"), args=["-ts_max_steps", "1"], ok=True,
+                              expect=["1 steps"]),
+    "msh22_binary_good": dict(msh=("22b", "good"), args=["-ts_max_steps", "1"], ok=True,
+                              expect=["1 steps"]),
+    "gmsh_msh41_files": dict(gmsh_formats=True, ok=True, expect=["1 steps"]),
+    # a mesh size factor below 0.5 that is fine: estimated, then meshed
+    "mesh_size_factor_fine": dict(args=["-mesh_size_factor", "0.25", "-ts_max_steps", "1"], ok=True,
+                                  expect=["1 steps"]),
+    # a killed run takes gmsh with it (the child dies with its parent: PR_SET_PDEATHSIG)
+    "gmsh_dies_with_run": dict(gmsh_kill=True, ok=True, expect=[]),
+    # nothing leaks (PETSc's -malloc_dump lists what was not freed at PetscFinalize)
+    "malloc_dump_clean": dict(args=["-ts_max_steps", "2", "-malloc_dump"], ok=True, expect=["2 steps"],
+                              absent_text=["PetscMalloc", "bytes "]),
+    "malloc_dump_clean_interface_np2": dict(
+        scene=JOINT_SCENE, args=["-ts_max_steps", "2", "-malloc_dump", "-bc_left_p3", "0"], ok=True,
+        expect=["2 steps"], absent_text=["PetscMalloc", "bytes "], ranks=2),
     "help": dict(help=True, ok=True,
                  expect=["-region_<r>_E", "-region_<r>_permeability", "-bc_<b>_traction",
                          "-initial_state", "-probe_<name>", "timeseries.csv"]),
 }
+
+
+# The unit square of meshes/bad_inverted.msh with both triangles counter-clockwise: physical
+# curves bottom, right, top, left (tags 1-4) and surface soil (5), the names of the base scene.
+SQUARE_NODES = [(1, 0.0, 0.0), (2, 1.0, 0.0), (3, 1.0, 1.0), (4, 0.0, 1.0)]
+SQUARE_LINES = [(1, 1, (1, 2)), (2, 2, (2, 3)), (3, 3, (3, 4)), (4, 4, (4, 1))]  # id, tag, nodes
+SQUARE_TRIANGLES = [(5, (1, 2, 3)), (6, (1, 3, 4))]
+PHYSICAL_NAMES = '$PhysicalNames\n5\n1 1 "bottom"\n1 2 "right"\n1 3 "top"\n1 4 "left"\n' \
+                 '2 5 "soil"\n$EndPhysicalNames\n'
+
+
+def msh_fixture(version, defect):
+    """The unit square as MSH 2.2 or 4.1, ASCII or binary ('22', '22b', '41', '41b'), with one
+    defect: missing_node (element 6 names node 9), node_count_high (2 more nodes declared than
+    given), element_count_low, truncate_nodes / truncate_elements (cut inside the section),
+    garbage, empty, geo_text, version_3, second_order (a 6-node triangle), no_physical_names,
+    nan (a coordinate), duplicate_node, unknown_entity (4.1: a block names entity 7), good."""
+    if defect == "empty":
+        return b""
+    if defect == "garbage":
+        rng = random.Random(11)
+        return bytes(rng.randrange(256) for _ in range(2000))
+    if defect == "geo_text":
+        with open(os.path.join(SOURCE, "meshes", "terzaghi_column_2d.geo"), "rb") as f:
+            return f.read()
+    nodes = list(SQUARE_NODES)
+    tris = [list(t) for t in SQUARE_TRIANGLES]
+    tri_type, n_extra = 2, 0
+    if defect == "missing_node":
+        tris[1][1] = (1, 9, 4)
+    if defect == "duplicate_node":
+        nodes[3] = (3, 0.0, 1.0)
+    if defect == "node_count_high":
+        n_extra = 2
+    binary = version.endswith("b")
+    fmt = "2.2" if version.startswith("22") else "4.1"
+    if defect == "version_3":
+        fmt = "3.0"
+    head = f"$MeshFormat\n{fmt} {1 if binary else 0} 8\n".encode()
+    if binary:
+        head += struct.pack("<i", 1) + b"\n"
+    head += b"$EndMeshFormat\n"
+    names = b"" if defect == "no_physical_names" else PHYSICAL_NAMES.encode()
+    coord = (lambda v: "nan" if defect == "nan" and v == 1.0 else repr(v))
+    if version == "22":
+        body = f"$Nodes\n{len(nodes) + n_extra}\n"
+        body += "".join(f"{i} {coord(x)} {coord(y)} 0\n" for i, x, y in nodes) + "$EndNodes\n"
+        elements = [f"{i} 1 2 {t} {t} {a} {b}" for i, t, (a, b) in SQUARE_LINES]
+        if defect == "second_order":
+            elements += [f"{i} 9 2 5 1 {a} {b} {c} 1 2 3" for i, (a, b, c) in tris]
+        else:
+            elements += [f"{i} {tri_type} 2 5 1 {a} {b} {c}" for i, (a, b, c) in tris]
+        count = len(elements) - (1 if defect == "element_count_low" else 0)
+        body += f"$Elements\n{count}\n" + "\n".join(elements) + "\n$EndElements\n"
+        data = head + names + body.encode()
+    elif version == "22b":
+        body = f"$Nodes\n{len(nodes) + n_extra}\n".encode()
+        for i, x, y in nodes:
+            body += struct.pack("<iddd", i, x, y, 0.0)
+        body += b"\n$EndNodes\n" + f"$Elements\n{len(SQUARE_LINES) + len(tris)}\n".encode()
+        body += struct.pack("<iii", 1, len(SQUARE_LINES), 2)
+        for i, t, (a, b) in SQUARE_LINES:
+            body += struct.pack("<iiiii", i, t, t, a, b)
+        body += struct.pack("<iii", 2, len(tris), 2)
+        for i, (a, b, c) in tris:
+            body += struct.pack("<iiiiii", i, 5, 1, a, b, c)
+        body += b"\n$EndElements\n"
+        data = head + names + body
+    else:
+        entity7 = defect == "unknown_entity"
+        if not binary:
+            ent = "$Entities\n0 4 1 0\n"
+            ent += "".join(f"{t} 0 0 0 1 1 0 1 {t} 0\n" for t in range(1, 5))
+            ent += "1 0 0 0 1 1 0 1 5 4 1 2 3 4\n$EndEntities\n"
+            nod = f"$Nodes\n1 {len(nodes) + n_extra} 1 4\n2 1 0 {len(nodes)}\n"
+            nod += "".join(f"{i}\n" for i, _, _ in nodes)
+            nod += "".join(f"{coord(x)} {coord(y)} 0\n" for _, x, y in nodes) + "$EndNodes\n"
+            el = f"$Elements\n5 6 1 6\n"
+            for i, t, (a, b) in SQUARE_LINES:
+                el += f"1 {t} 1 1\n{i} {a} {b}\n"
+            el += f"2 {7 if entity7 else 1} 2 {len(tris)}\n"
+            el += "".join(f"{i} {a} {b} {c}\n" for i, (a, b, c) in tris) + "$EndElements\n"
+            data = head + names + (ent + nod + el).encode()
+        else:
+            ent = b"$Entities\n" + struct.pack("<QQQQ", 0, 4, 1, 0)
+            for t in range(1, 5):
+                ent += struct.pack("<i6dQiQ", t, 0, 0, 0, 1, 1, 0, 1, t, 0)
+            ent += struct.pack("<i6dQiQ4i", 1, 0, 0, 0, 1, 1, 0, 1, 5, 4, 1, 2, 3, 4)
+            ent += b"\n$EndEntities\n"
+            nod = b"$Nodes\n" + struct.pack("<QQQQ", 1, len(nodes) + n_extra, 1, 4)
+            nod += struct.pack("<iiiQ", 2, 1, 0, len(nodes))
+            nod += b"".join(struct.pack("<Q", i) for i, _, _ in nodes)
+            nod += b"".join(struct.pack("<3d", x, y, 0.0) for _, x, y in nodes)
+            nod += b"\n$EndNodes\n"
+            el = b"$Elements\n" + struct.pack("<QQQQ", 5, 6, 1, 6)
+            for i, t, (a, b) in SQUARE_LINES:
+                el += struct.pack("<iiiQ", 1, t, 1, 1) + struct.pack("<3Q", i, a, b)
+            el += struct.pack("<iiiQ", 2, 7 if entity7 else 1, 2, len(tris))
+            el += b"".join(struct.pack("<4Q", i, a, b, c) for i, (a, b, c) in tris)
+            el += b"\n$EndElements\n"
+            data = head + names + ent + nod + el
+    if defect == "truncate_nodes":
+        data = data[:data.index(b"$Nodes") + 40]
+    if defect == "truncate_elements":
+        data = data[:data.index(b"$Elements") + 30]
+    return data
+
+
+def gmsh_formats(out):
+    """Meshes the Terzaghi column with gmsh in MSH 4.1 ASCII and binary and MSH 2.2 binary;
+    each must run. Returns (exit status, output) of the last run that failed or the last."""
+    text, rc = "", 0
+    for fmt, extra in (("msh41", []), ("msh41", ["-bin"]), ("msh22", ["-bin"])):
+        msh = os.path.join(out, f"column_{fmt}{''.join(extra)}.msh")
+        subprocess.run(["gmsh", "-3", "-v", "1", "-format", fmt] + extra +
+                       ["-o", msh, os.path.join(SOURCE, "meshes", "terzaghi_column_2d.geo")],
+                       check=True, stdout=subprocess.DEVNULL)
+        p = subprocess.run([EXE, "-options_file", BASE_SCENE, "-output_dir", out, "-mesh", msh,
+                            "-ts_max_steps", "1"], cwd=SOURCE, stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, timeout=TIMEOUT)
+        text += f"[{os.path.basename(msh)}]\n" + p.stdout.decode(errors="replace")
+        rc = rc or p.returncode
+    return rc, text
+
+
+def children_of(pid):
+    """Process ids whose parent is pid (from /proc)."""
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                fields = f.read().rsplit(")", 1)[1].split()
+            if int(fields[1]) == pid:
+                found.append(int(entry))
+        except (OSError, IndexError, ValueError):
+            pass
+    return found
+
+
+def command_name(pid):
+    try:
+        with open(f"/proc/{pid}/comm") as f:
+            return f.read().strip()
+    except OSError:
+        return ""
+
+
+def gmsh_kill(out):
+    """Starts a run whose gmsh takes a while (the 3D caisson quarter at factor 0.3), kills
+    poroseam with SIGKILL once gmsh runs, and checks that gmsh is gone within 5 s."""
+    cmd = [EXE, "-options_file", os.path.join(SOURCE, "options", "caisson_partially_drained.opts"),
+           "-output_dir", out, "-mesh_size_factor", "0.3", "-mesh_max_elements", "100000000"]
+    p = subprocess.Popen(cmd, cwd=SOURCE, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    gmsh, t0 = None, time.time()
+    while time.time() - t0 < 20 and gmsh is None and p.poll() is None:
+        for child in children_of(p.pid):
+            # the factor-1 estimate mesh comes first; wait for the real one
+            if command_name(child) == "gmsh" and os.path.exists(os.path.join(out, "mesh")) and \
+                    time.time() - t0 > 1.0:
+                gmsh = child
+        time.sleep(0.05)
+    if gmsh is None:
+        p.kill()
+        p.wait()
+        return 1, "no gmsh child process seen within 20 s"
+    time.sleep(0.3)
+    p.kill()
+    p.wait()
+    t1 = time.time()
+    while time.time() - t1 < 5:
+        if not os.path.exists(f"/proc/{gmsh}") or command_name(gmsh) != "gmsh":
+            return 0, f"gmsh (pid {gmsh}) ended {time.time() - t1:.2f} s after poroseam was killed"
+        with open(f"/proc/{gmsh}/stat") as f:
+            if f.read().rsplit(")", 1)[1].split()[0] == "Z":
+                return 0, f"gmsh (pid {gmsh}) ended (zombie) after poroseam was killed"
+        time.sleep(0.05)
+    os.kill(gmsh, 9)
+    return 1, f"gmsh (pid {gmsh}) still running 5 s after poroseam was killed (killed it now)"
 
 
 def strip_option_echo(text):
@@ -133,6 +461,15 @@ def main():
     out = os.path.join(OUTPUT_ROOT, "input", a.case)
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
+    if "msh" in case:
+        with open(os.path.join(out, "bad.msh"), "wb") as f:
+            f.write(msh_fixture(*case["msh"]))
+        case = dict(case, args=["-mesh", "{out}/bad.msh"] + case.get("args", []))
+    if "mkdir" in case:
+        os.makedirs(os.path.join(out, case["mkdir"]))
+    if "write" in case:
+        with open(os.path.join(out, case["write"][0]), "w") as f:
+            f.write(case["write"][1])
     if "copy" in case:
         target = os.path.join(out, case["copy"][1])
         os.makedirs(os.path.dirname(target), exist_ok=True)
@@ -143,8 +480,11 @@ def main():
             os.remove(path)
     if case.get("help"):
         cmd = [EXE, "-help"]
+    elif "raw" in case:
+        cmd = [EXE] + [s.format(out=out) for s in case["raw"]]
     else:
-        scene = scene_without(case["drop"], out) if "drop" in case else BASE_SCENE
+        base = case.get("scene", BASE_SCENE)
+        scene = scene_without(case["drop"], out) if "drop" in case else base
         cmd = [EXE, "-options_file", scene, "-output_dir", out] + \
               [s.format(out=out) for s in case.get("args", [])]
     ranks = case.get("ranks", 1)
@@ -156,16 +496,22 @@ def main():
     env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
     print("run:", " ".join(cmd), flush=True)
     t0 = time.time()
-    try:
-        p = subprocess.run(cmd, cwd=SOURCE, env=env, stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, timeout=TIMEOUT)
-        rc, text = p.returncode, p.stdout.decode(errors="replace")
-    except subprocess.TimeoutExpired as e:
-        rc, text = "timeout", (e.stdout or b"").decode(errors="replace")
+    if case.get("gmsh_formats"):
+        rc, text = gmsh_formats(out)
+    elif case.get("gmsh_kill"):
+        rc, text = gmsh_kill(out)
+    else:
+        try:
+            p = subprocess.run(cmd, cwd=SOURCE, env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, timeout=TIMEOUT)
+            rc, text = p.returncode, p.stdout.decode(errors="replace")
+        except subprocess.TimeoutExpired as e:
+            rc, text = "timeout", (e.stdout or b"").decode(errors="replace")
     wall = time.time() - t0
     with open(os.path.join(out, "log.txt"), "w") as f:
         f.write(text)
-    message = strip_option_echo(text)
+    # the case's directory named as <out>: its name (the case's name) must not make a match
+    message = strip_option_echo(text).replace(out, "<out>")
     failures = []
     if rc == "timeout":
         failures.append(f"no exit within {TIMEOUT:.0f} s (hang)")
@@ -187,6 +533,17 @@ def main():
     for s in CRASH:
         if re.search(s, text):
             failures.append(f"crash signature '{s}' in the output")
+    for s in case.get("absent_text", []):
+        if s in text:
+            failures.append(f"the output contains '{s}'")
+    if not case.get("ok"):
+        # one line that says it, once (not once per rank), without PETSc's banner or an abort
+        errors = [l for l in text.splitlines() if l.startswith("poroseam: error:")]
+        if len(errors) != 1:
+            failures.append(f"{len(errors)} 'poroseam: error:' lines, expected exactly 1")
+        for s in ("PETSC ERROR", "MPI_ABORT", "Traceback"):
+            if s in text:
+                failures.append(f"the output contains '{s}'")
     # show the error text (the lines that matter) for the log
     shown = [l for l in message.splitlines()
              if "PETSC ERROR: #" not in l and l.strip()

@@ -1,0 +1,622 @@
+#include "poroseam/msh_check.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <sys/stat.h>
+#include <unordered_set>
+
+namespace poroseam {
+namespace {
+
+/// Nodes per element for the Gmsh types poroseam computes with (linear elements only).
+int nodesOfType(long type, int *dim)
+{
+  switch (type) {
+  case 15: *dim = 0; return 1; // point
+  case 1: *dim = 1; return 2;  // line
+  case 2: *dim = 2; return 3;  // triangle
+  case 3: *dim = 2; return 4;  // quadrangle
+  case 4: *dim = 3; return 4;  // tetrahedron
+  case 5: *dim = 3; return 8;  // hexahedron
+  default: return -1;
+  }
+}
+
+const char *typeName(long type)
+{
+  switch (type) {
+  case 6: return "prism";
+  case 7: return "pyramid";
+  case 8: return "3-node line";
+  case 9: return "6-node triangle";
+  case 10: return "9-node quadrangle";
+  case 11: return "10-node tetrahedron";
+  case 12: return "27-node hexahedron";
+  case 16: return "8-node quadrangle";
+  case 17: return "20-node hexahedron";
+  default: return "unknown type";
+  }
+}
+
+struct Failure {
+  std::string what;
+};
+
+/// A cursor over the file's bytes: tokens and lines for ASCII parts, raw values for binary.
+class Cursor {
+public:
+  explicit Cursor(const std::string &data) : d_(data) {}
+
+  bool atEnd() const { return pos_ >= d_.size(); }
+  size_t pos() const { return pos_; }
+
+  /// Where the cursor is, for messages: "line N" (ASCII) or "byte N" (binary data).
+  std::string where(bool binary) const
+  {
+    if (binary) return "byte " + std::to_string(pos_);
+    long line = 1;
+    for (size_t i = 0; i < pos_ && i < d_.size(); ++i)
+      line += d_[i] == '\n';
+    return "line " + std::to_string(line);
+  }
+
+  void skipSpace()
+  {
+    while (pos_ < d_.size() && std::isspace((unsigned char)d_[pos_]))
+      ++pos_;
+  }
+
+  /// The next whitespace-separated token; "" at the end of the file.
+  std::string token()
+  {
+    skipSpace();
+    const size_t start = pos_;
+    while (pos_ < d_.size() && !std::isspace((unsigned char)d_[pos_]))
+      ++pos_;
+    return d_.substr(start, pos_ - start);
+  }
+
+  /// The rest of the current line (without '\r'), moving past its '\n'.
+  std::string line()
+  {
+    const size_t start = pos_;
+    while (pos_ < d_.size() && d_[pos_] != '\n')
+      ++pos_;
+    std::string s = d_.substr(start, pos_ - start);
+    if (pos_ < d_.size()) ++pos_;
+    while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '\t'))
+      s.pop_back();
+    return s;
+  }
+
+  bool integer(long long *v)
+  {
+    const std::string t = token();
+    if (t.empty()) return false;
+    errno = 0;
+    char *end = nullptr;
+    *v = std::strtoll(t.c_str(), &end, 10);
+    return errno == 0 && end && *end == '\0';
+  }
+
+  bool real(double *v)
+  {
+    const std::string t = token();
+    if (t.empty()) return false;
+    char *end = nullptr;
+    *v = std::strtod(t.c_str(), &end);
+    return end && *end == '\0';
+  }
+
+  bool raw(void *out, size_t n)
+  {
+    if (d_.size() - pos_ < n || pos_ > d_.size()) return false;
+    std::memcpy(out, d_.data() + pos_, n);
+    pos_ += n;
+    return true;
+  }
+
+  /// Moves just past the next occurrence of `marker` at the start of a line; false if none.
+  bool skipPast(const std::string &marker)
+  {
+    size_t at = pos_;
+    while (true) {
+      at = d_.find(marker, at);
+      if (at == std::string::npos) return false;
+      if (at == 0 || d_[at - 1] == '\n') break;
+      at += marker.size();
+    }
+    pos_ = at + marker.size();
+    return true;
+  }
+
+private:
+  const std::string &d_;
+  size_t pos_ = 0;
+};
+
+class MshChecker {
+public:
+  MshChecker(const std::string &data, std::vector<PhysicalName> &names, MshSummary &s)
+      : c_(data), names_(names), s_(s)
+  {
+  }
+
+  void run()
+  {
+    c_.skipSpace();
+    if (c_.atEnd()) fail("the file is empty");
+    if (c_.token() != "$MeshFormat")
+      fail("not a Gmsh mesh: it does not start with $MeshFormat", false, 0);
+    readFormat();
+    bool physical = false, entities = false, nodes = false, elements = false;
+    while (true) {
+      const std::string section = c_.token();
+      if (section.empty()) break;
+      if (section.size() < 2 || section[0] != '$')
+        fail("expected a section ($Nodes, $Elements, ...), found '" + printable(section) + "'");
+      const std::string name = section.substr(1);
+      c_.line(); // the header's line: binary data start on the next one
+      if (name == "PhysicalNames") {
+        if (nodes) fail("$PhysicalNames after $Nodes (Gmsh writes it before)");
+        readPhysicalNames();
+        physical = true;
+      } else if (name == "Entities") {
+        if (s_.version != 41) fail("$Entities in a MSH 2.2 file");
+        if (nodes) fail("$Entities after $Nodes (Gmsh writes it before)");
+        readEntities();
+        entities = true;
+      } else if (name == "Nodes") {
+        if (nodes) fail("a second $Nodes section");
+        if (s_.version == 41 && !entities) fail("$Nodes before $Entities (MSH 4.1 needs $Entities first)");
+        readNodes();
+        nodes = true;
+      } else if (name == "Elements") {
+        if (!nodes) fail("$Elements before $Nodes");
+        if (elements) fail("a second $Elements section");
+        readElements();
+        elements = true;
+      } else if (name.rfind("End", 0) == 0) {
+        fail("'" + printable(section) + "' without its section");
+      } else {
+        // $Comments, $Periodic, $NodeData, ...: not ours to read; they must end.
+        if (!c_.skipPast("$End" + name))
+          fail("section $" + printable(name) + " has no $End" + printable(name) +
+               " (the file is truncated)");
+      }
+    }
+    if (!nodes) fail("no $Nodes section (the file is truncated, or not a mesh)", false, 0);
+    if (!elements) fail("no $Elements section (the file is truncated, or not a mesh)", false, 0);
+    if (s_.cells == 0) fail("no elements", false, 0);
+    if (!physical)
+      fail("no $PhysicalNames: name the regions and boundaries as Gmsh physical groups", false,
+           0);
+  }
+
+private:
+  [[noreturn]] void fail(const std::string &what, bool binary_part = false, int show_where = 1)
+  {
+    throw Failure{what + (show_where ? " (" + c_.where(binary_part) + ")" : "")};
+  }
+
+  static std::string printable(const std::string &s)
+  {
+    std::string out;
+    for (unsigned char ch : s.substr(0, 40))
+      out += std::isprint(ch) ? (char)ch : '?';
+    return out + (s.size() > 40 ? "..." : "");
+  }
+
+  void expectEnd(const std::string &name)
+  {
+    const std::string t = c_.token();
+    if (t != "$End" + name)
+      fail(t.empty() ? "the file ends inside $" + name + " (truncated?)"
+                     : "expected $End" + name + ", found '" + printable(t) +
+                           "' (a count in $" + name + " does not match its entries)");
+  }
+
+  long long integer(const char *what, long long min = 0)
+  {
+    const std::string t = c_.token();
+    if (t.empty()) fail(std::string("the file ends where ") + what + " was expected (truncated?)");
+    if (t[0] == '$')
+      fail("'" + printable(t) + "' where " + what + " was expected: the section ends before " +
+           "its count of entries (truncated, or a wrong count)");
+    errno = 0;
+    char *end = nullptr;
+    const long long v = std::strtoll(t.c_str(), &end, 10);
+    if (errno != 0 || !end || *end != '\0')
+      fail(std::string("expected ") + what + " (an integer), found '" + printable(t) + "'");
+    if (v < min)
+      fail(std::string(what) + " " + std::to_string(v) + " must be >= " + std::to_string(min));
+    return v;
+  }
+
+  double real(const char *what)
+  {
+    const std::string t = c_.token();
+    if (t.empty()) fail(std::string("the file ends where ") + what + " was expected (truncated?)");
+    if (t[0] == '$')
+      fail("'" + printable(t) + "' where " + what + " was expected: the section ends before " +
+           "its count of entries (truncated, or a wrong count)");
+    char *end = nullptr;
+    const double v = std::strtod(t.c_str(), &end);
+    if (!end || *end != '\0')
+      fail(std::string("expected ") + what + " (a number), found '" + printable(t) + "'");
+    if (!std::isfinite(v)) fail(std::string(what) + " is " + printable(t) + ", not a finite number");
+    return v;
+  }
+
+  template <class T> T bin(const char *what)
+  {
+    T v;
+    if (!c_.raw(&v, sizeof v))
+      fail(std::string("the file ends where ") + what + " was expected (truncated?)", true);
+    if (swap_) {
+      unsigned char *b = reinterpret_cast<unsigned char *>(&v);
+      for (size_t i = 0; i < sizeof v / 2; ++i)
+        std::swap(b[i], b[sizeof v - 1 - i]);
+    }
+    return v;
+  }
+
+  /// A count or tag: int in MSH 2.2 binary and 4.1 block headers, size_t elsewhere in 4.1.
+  long long binSize(const char *what) { return (long long)bin<uint64_t>(what); }
+
+  void readFormat()
+  {
+    const double version = real("the format version");
+    const long long type = integer("the file type (0 ASCII, 1 binary)");
+    const long long size = integer("the data size");
+    s_.version = (int)std::lround(version * 10);
+    if (s_.version != 22 && s_.version != 41) {
+      std::ostringstream v;
+      v << version;
+      fail("MSH format " + v.str() +
+           " is not supported: write MSH 2.2 or 4.1 (gmsh -format msh22 or msh41)");
+    }
+    if (type != 0 && type != 1) fail("file type " + std::to_string(type) + ": expected 0 or 1");
+    if (size != 8) fail("data size " + std::to_string(size) + ": expected 8");
+    s_.binary = type == 1;
+    c_.line(); // end of the format line
+    if (s_.binary) {
+      const int one = bin<int32_t>("the binary endianness mark");
+      if (one != 1) {
+        int32_t swapped = one;
+        unsigned char *b = reinterpret_cast<unsigned char *>(&swapped);
+        std::swap(b[0], b[3]);
+        std::swap(b[1], b[2]);
+        if (swapped != 1) fail("bad binary endianness mark (expected the integer 1)", true);
+        swap_ = true;
+      }
+    }
+    expectEnd("MeshFormat");
+  }
+
+  void readPhysicalNames()
+  {
+    const long long count = integer("the number of physical names");
+    c_.line();
+    for (long long i = 0; i < count; ++i) {
+      const std::string text = c_.line();
+      PhysicalName n;
+      std::istringstream fields(text);
+      const auto a = text.find('"'), b = text.rfind('"');
+      if (!(fields >> n.dim >> n.tag) || a == std::string::npos || b <= a || n.dim < 0 ||
+          n.dim > 3) {
+        if (c_.atEnd() && text.empty()) fail("the file ends inside $PhysicalNames (truncated?)");
+        fail("bad $PhysicalNames entry '" + printable(text) + "': expected dim tag \"name\"");
+      }
+      n.name = text.substr(a + 1, b - a - 1);
+      names_.push_back(n);
+    }
+    expectEnd("PhysicalNames");
+  }
+
+  void readEntities()
+  {
+    long long count[4];
+    for (int d = 0; d < 4; ++d)
+      count[d] = s_.binary ? binSize("an entity count") : integer("an entity count");
+    for (int d = 0; d < 4; ++d)
+      for (long long i = 0; i < count[d]; ++i) {
+        const long long tag = s_.binary ? bin<int32_t>("an entity tag") : integer("an entity tag", LLONG_MIN);
+        for (int k = 0; k < (d == 0 ? 3 : 6); ++k)
+          if (s_.binary) {
+            const double x = bin<double>("an entity coordinate");
+            if (!std::isfinite(x)) fail("an entity coordinate is not finite", true);
+          } else {
+            real("an entity coordinate");
+          }
+        const long long physical =
+            s_.binary ? binSize("a physical tag count") : integer("a physical tag count");
+        if (physical > 16)
+          fail("entity " + std::to_string(tag) + " has " + std::to_string(physical) +
+                   " physical tags (at most 16)",
+               s_.binary);
+        for (long long k = 0; k < physical; ++k)
+          s_.binary ? (void)bin<int32_t>("a physical tag")
+                    : (void)integer("a physical tag", LLONG_MIN);
+        if (d > 0) {
+          const long long bounding =
+              s_.binary ? binSize("a bounding entity count") : integer("a bounding entity count");
+          if (bounding < 0 || bounding > 1000000) fail("bad bounding entity count", s_.binary);
+          for (long long k = 0; k < bounding; ++k)
+            s_.binary ? (void)bin<int32_t>("a bounding entity")
+                      : (void)integer("a bounding entity", LLONG_MIN);
+        }
+        entities_[d].insert(tag);
+      }
+    expectEnd("Entities");
+  }
+
+  void addNode(long long tag, bool binary_part)
+  {
+    if (tag < 1) fail("node tag " + std::to_string(tag) + " must be >= 1", binary_part);
+    if (!nodes_.insert(tag).second)
+      fail("node " + std::to_string(tag) + " is defined twice", binary_part);
+  }
+
+  void readNodes()
+  {
+    if (s_.version == 22) {
+      const long long n = integer("the number of nodes");
+      if (s_.binary) c_.line();
+      for (long long i = 0; i < n; ++i) {
+        if (s_.binary) {
+          addNode(bin<int32_t>("a node tag"), true);
+          for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(bin<double>("a node coordinate")))
+              fail("a node coordinate is not finite", true);
+        } else {
+          addNode(integer("a node tag", LLONG_MIN), false);
+          for (int k = 0; k < 3; ++k)
+            real("a node coordinate");
+        }
+      }
+      s_.nodes = n;
+      expectEnd("Nodes");
+      return;
+    }
+    long long blocks, total, min_tag, max_tag;
+    if (s_.binary) {
+      blocks = binSize("the number of node blocks");
+      total = binSize("the number of nodes");
+      min_tag = binSize("the smallest node tag");
+      max_tag = binSize("the largest node tag");
+    } else {
+      blocks = integer("the number of node blocks");
+      total = integer("the number of nodes");
+      min_tag = integer("the smallest node tag");
+      max_tag = integer("the largest node tag");
+    }
+    if (total > 0 && (max_tag < min_tag || max_tag - min_tag > 100 * total + 1000000))
+      fail("node tag range " + std::to_string(min_tag) + ".." + std::to_string(max_tag) +
+               " does not fit " + std::to_string(total) + " nodes",
+           s_.binary);
+    long long seen = 0;
+    for (long long b = 0; b < blocks; ++b) {
+      long long dim, entity, parametric, n;
+      if (s_.binary) {
+        dim = bin<int32_t>("a node block's dimension");
+        entity = bin<int32_t>("a node block's entity");
+        parametric = bin<int32_t>("a node block's parametric flag");
+        n = binSize("a node block's size");
+      } else {
+        dim = integer("a node block's dimension");
+        entity = integer("a node block's entity", LLONG_MIN);
+        parametric = integer("a node block's parametric flag");
+        n = integer("a node block's size");
+      }
+      if (dim > 3) fail("node block of dimension " + std::to_string(dim), s_.binary);
+      if (!entities_[dim].count(entity))
+        fail("node block names entity " + std::to_string(entity) + " of dimension " +
+                 std::to_string(dim) + ", which is not in $Entities",
+             s_.binary);
+      if (parametric) fail("parametric node coordinates are not supported", s_.binary);
+      if (n < 0 || seen + n > total)
+        fail("the node blocks hold more than the " + std::to_string(total) + " nodes declared",
+             s_.binary);
+      seen += n;
+      for (long long i = 0; i < n; ++i) {
+        const long long tag = s_.binary ? binSize("a node tag") : integer("a node tag", LLONG_MIN);
+        if (tag < min_tag || tag > max_tag)
+          fail("node tag " + std::to_string(tag) + " outside the declared range " +
+                   std::to_string(min_tag) + ".." + std::to_string(max_tag),
+               s_.binary);
+        addNode(tag, s_.binary);
+      }
+      for (long long i = 0; i < 3 * n; ++i)
+        if (s_.binary) {
+          if (!std::isfinite(bin<double>("a node coordinate")))
+            fail("a node coordinate is not finite", true);
+        } else {
+          real("a node coordinate");
+        }
+    }
+    if (seen != total)
+      fail("the node blocks hold " + std::to_string(seen) + " nodes, " + std::to_string(total) +
+               " declared",
+           s_.binary);
+    s_.nodes = total;
+    expectEnd("Nodes");
+  }
+
+  void element(long long tag, long long type, const std::vector<long long> &nodes, bool binary)
+  {
+    for (long long node : nodes)
+      if (!nodes_.count(node))
+        fail("element " + std::to_string(tag) + " refers to node " + std::to_string(node) +
+                 ", which is not in $Nodes",
+             binary);
+    int dim = 0;
+    nodesOfType(type, &dim);
+    if (dim > s_.dim) s_.dim = dim, s_.cells = 0;
+    if (dim == s_.dim) ++s_.cells;
+  }
+
+  int checkedType(long long type, bool binary)
+  {
+    int dim = 0;
+    const int n = nodesOfType(type, &dim);
+    if (n < 0)
+      fail("element type " + std::to_string(type) + " (" + typeName(type) +
+               ") is not supported: poroseam needs linear points, lines, triangles, "
+               "quadrangles, tetrahedra or hexahedra (gmsh -order 1)",
+           binary);
+    return n;
+  }
+
+  void readElements()
+  {
+    std::vector<long long> nodes;
+    if (s_.version == 22) {
+      const long long total = integer("the number of elements");
+      if (!s_.binary) {
+        for (long long i = 0; i < total; ++i) {
+          const long long tag = integer("an element tag");
+          const long long type = integer("an element type");
+          const int n = checkedType(type, false);
+          const long long ntags = integer("an element's number of tags");
+          if (ntags > 16) fail("element " + std::to_string(tag) + " has more than 16 tags");
+          for (long long k = 0; k < ntags; ++k)
+            integer("an element tag value", LLONG_MIN);
+          nodes.resize(n);
+          for (int k = 0; k < n; ++k)
+            nodes[k] = integer("an element's node", LLONG_MIN);
+          element(tag, type, nodes, false);
+        }
+      } else {
+        c_.line();
+        long long seen = 0;
+        while (seen < total) {
+          const long long type = bin<int32_t>("an element group's type");
+          const long long count = bin<int32_t>("an element group's size");
+          const long long ntags = bin<int32_t>("an element group's number of tags");
+          const int n = checkedType(type, true);
+          if (count < 1 || seen + count > total)
+            fail("element group of " + std::to_string(count) + " elements does not fit the " +
+                     std::to_string(total) + " declared",
+                 true);
+          if (ntags < 0 || ntags > 16) fail("element group with more than 16 tags", true);
+          seen += count;
+          nodes.resize(n);
+          for (long long i = 0; i < count; ++i) {
+            const long long tag = bin<int32_t>("an element tag");
+            for (long long k = 0; k < ntags; ++k)
+              (void)bin<int32_t>("an element tag value");
+            for (int k = 0; k < n; ++k)
+              nodes[k] = bin<int32_t>("an element's node");
+            element(tag, type, nodes, true);
+          }
+        }
+      }
+      expectEnd("Elements");
+      return;
+    }
+    long long blocks, total;
+    if (s_.binary) {
+      blocks = binSize("the number of element blocks");
+      total = binSize("the number of elements");
+      binSize("the smallest element tag");
+      binSize("the largest element tag");
+    } else {
+      blocks = integer("the number of element blocks");
+      total = integer("the number of elements");
+      integer("the smallest element tag");
+      integer("the largest element tag");
+    }
+    long long seen = 0;
+    for (long long b = 0; b < blocks; ++b) {
+      long long dim, entity, type, count;
+      if (s_.binary) {
+        dim = bin<int32_t>("an element block's dimension");
+        entity = bin<int32_t>("an element block's entity");
+        type = bin<int32_t>("an element block's type");
+        count = binSize("an element block's size");
+      } else {
+        dim = integer("an element block's dimension");
+        entity = integer("an element block's entity", LLONG_MIN);
+        type = integer("an element block's type");
+        count = integer("an element block's size");
+      }
+      const int n = checkedType(type, s_.binary);
+      int type_dim = 0;
+      nodesOfType(type, &type_dim);
+      if (dim != type_dim)
+        fail("element block of dimension " + std::to_string(dim) + " holds elements of type " +
+                 std::to_string(type) + " (dimension " + std::to_string(type_dim) + ")",
+             s_.binary);
+      if (!entities_[dim].count(entity))
+        fail("element block names entity " + std::to_string(entity) + " of dimension " +
+                 std::to_string(dim) + ", which is not in $Entities",
+             s_.binary);
+      if (count < 0 || seen + count > total)
+        fail("the element blocks hold more than the " + std::to_string(total) +
+                 " elements declared",
+             s_.binary);
+      seen += count;
+      nodes.resize(n);
+      for (long long i = 0; i < count; ++i) {
+        const long long tag = s_.binary ? binSize("an element tag") : integer("an element tag");
+        for (int k = 0; k < n; ++k)
+          nodes[k] = s_.binary ? binSize("an element's node") : integer("an element's node", LLONG_MIN);
+        element(tag, type, nodes, s_.binary);
+      }
+    }
+    if (seen != total)
+      fail("the element blocks hold " + std::to_string(seen) + " elements, " +
+               std::to_string(total) + " declared",
+           s_.binary);
+    expectEnd("Elements");
+  }
+
+  Cursor c_;
+  std::vector<PhysicalName> &names_;
+  MshSummary &s_;
+  bool swap_ = false;
+  std::set<long long> entities_[4];
+  std::unordered_set<long long> nodes_;
+};
+
+} // namespace
+
+std::string checkGmshFile(const std::string &path, std::vector<PhysicalName> &names,
+                          MshSummary &summary)
+{
+  const std::string file = "mesh file '" + path + "' (option -mesh)";
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0) return file + " does not exist";
+  if (S_ISDIR(st.st_mode)) return file + " is a directory: expected a Gmsh .msh or .geo file";
+  if (!S_ISREG(st.st_mode)) return file + " is not a regular file";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return file + ": cannot be read (" + std::strerror(errno) + ")";
+  std::string data;
+  data.resize((size_t)st.st_size);
+  if (st.st_size > 0 && !in.read(&data[0], st.st_size))
+    return file + ": cannot be read";
+  names.clear();
+  summary = MshSummary{};
+  try {
+    MshChecker(data, names, summary).run();
+  } catch (const Failure &f) {
+    names.clear();
+    return file + ": " + f.what;
+  } catch (const std::bad_alloc &) {
+    names.clear();
+    return file + ": too large to check in memory";
+  }
+  return "";
+}
+
+} // namespace poroseam

@@ -1,0 +1,192 @@
+#include "poroseam/run_options.hpp"
+
+#include "poroseam/collective_check.hpp"
+#include "poroseam/scene.hpp"
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+#include <utility>
+#include <vector>
+
+namespace poroseam {
+namespace {
+
+/// Integer options read by poroseam or by the PETSc objects it sets up, by their name without
+/// a solver prefix (-fieldsplit_displacement_ksp_max_it matches ksp_max_it).
+const char *const kIntegerOptions[] = {
+    "ts_max_steps",      "ts_max_reject",       "ts_max_snes_failures",
+    "ts_bdf_order",      "snes_max_it",         "snes_max_funcs",
+    "snes_max_fail",     "snes_max_linear_solve_fail", "snes_lag_jacobian",
+    "snes_lag_preconditioner", "ksp_max_it",    "ksp_gmres_restart",
+    "pc_mg_levels",      "pc_gamg_agg_nsmooths", "pc_hypre_boomeramg_max_iter",
+    "pc_hypre_boomeramg_max_levels", "solver_auto_threshold"};
+/// Real options, likewise.
+const char *const kRealOptions[] = {
+    "ts_dt",          "ts_max_time",     "ts_rtol",         "ts_atol",
+    "ts_adapt_dt_min", "ts_adapt_dt_max", "ts_adapt_safety", "ts_adapt_reject_safety",
+    "ts_adapt_scale_solve_failed", "ts_adapt_clip", "snes_rtol", "snes_atol",
+    "snes_stol",      "snes_divergence_tolerance", "snes_reference_rtol", "ksp_rtol",
+    "ksp_atol",       "ksp_divtol",      "test_fail_dt_above", "pc_factor_shift_amount"};
+
+/// Every option set, as (name without '-', value) in the order PETSc lists them.
+PetscErrorCode allOptions(std::vector<std::pair<std::string, std::string>> &out)
+{
+  char *all = nullptr;
+  PetscFunctionBeginUser;
+  out.clear();
+  PetscCall(PetscOptionsGetAll(nullptr, &all));
+  std::istringstream in(all ? all : "");
+  PetscCall(PetscFree(all));
+  std::string token;
+  while (in >> token) {
+    // A name is '-' and a letter; "-1e6" is a value.
+    if (token.size() > 1 && token[0] == '-' && std::isalpha((unsigned char)token[1]))
+      out.emplace_back(token.substr(1), "");
+    else if (!out.empty())
+      out.back().second += (out.back().second.empty() ? "" : " ") + token;
+  }
+  PetscFunctionReturn(0);
+}
+
+/// Whether `option` is `base` or `<prefix>_base`.
+bool matches(const std::string &option, const std::string &base)
+{
+  if (option == base) return true;
+  return option.size() > base.size() + 1 &&
+         option.compare(option.size() - base.size(), base.size(), base) == 0 &&
+         option[option.size() - base.size() - 1] == '_';
+}
+
+/// PETSc's own parsers, without their error output: true when `text` parses.
+bool parsesAsInt(const std::string &text, PetscInt *value)
+{
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  const PetscErrorCode bad = PetscOptionsStringToInt(text.c_str(), value);
+  PetscPopErrorHandler();
+  return !bad;
+}
+
+bool parsesAsReal(const std::string &text, PetscReal *value)
+{
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  const PetscErrorCode bad = PetscOptionsStringToReal(text.c_str(), value);
+  PetscPopErrorHandler();
+  return !bad && !PetscIsInfOrNanReal(*value);
+}
+
+} // namespace
+
+PetscErrorCode checkNumericOptions(MPI_Comm comm)
+{
+  std::vector<std::pair<std::string, std::string>> options;
+  PetscFunctionBeginUser;
+  PetscCall(allOptions(options));
+  for (const auto &[name, value] : options) {
+    for (const char *base : kIntegerOptions) {
+      if (!matches(name, base)) continue;
+      PetscInt v = 0;
+      PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT,
+                 "option -%s has no value: expected an integer", name.c_str());
+      PetscCheck(parsesAsInt(value, &v), comm, PETSC_ERR_USER_INPUT,
+                 "option -%s %s: expected an integer", name.c_str(), value.c_str());
+      if (name == "ts_max_steps")
+        PetscCheck(v > 0, comm, PETSC_ERR_USER_INPUT,
+                   "option -ts_max_steps %s: must be > 0 (the most steps the run may take)",
+                   value.c_str());
+      if (name == "ts_max_reject")
+        PetscCheck(v >= 0, comm, PETSC_ERR_USER_INPUT,
+                   "option -ts_max_reject %s: must be >= 0 (cuts of the time step allowed per "
+                   "step; a negative number would halve the step without end)",
+                   value.c_str());
+      if (name == "solver_auto_threshold")
+        PetscCheck(v >= 0, comm, PETSC_ERR_USER_INPUT,
+                   "option -solver_auto_threshold %s: must be >= 0 (unknowns)", value.c_str());
+    }
+    for (const char *base : kRealOptions) {
+      if (!matches(name, base)) continue;
+      PetscReal v = 0;
+      PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT,
+                 "option -%s has no value: expected a number", name.c_str());
+      PetscCheck(parsesAsReal(value, &v), comm, PETSC_ERR_USER_INPUT,
+                 "option -%s %s: expected a number", name.c_str(), value.c_str());
+      if (name == "ts_max_time")
+        PetscCheck(v > 0, comm, PETSC_ERR_USER_INPUT,
+                   "option -ts_max_time %s: must be > 0 (the time [s] the run ends at)",
+                   value.c_str());
+      if (name == "ts_dt")
+        PetscCheck(v > 0, comm, PETSC_ERR_USER_INPUT,
+                   "option -ts_dt %s: must be > 0 (the time step [s])", value.c_str());
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkOutputDirectory(MPI_Comm comm)
+{
+  char buffer[PETSC_MAX_PATH_LEN] = "";
+  PetscBool set = PETSC_FALSE;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-output_dir", buffer, sizeof buffer, &set));
+  const std::string dir = set ? buffer : Scene().output_dir;
+  PetscCheck(!dir.empty(), comm, PETSC_ERR_USER_INPUT,
+             "option -output_dir has no value: name the directory for the results");
+  std::string error;
+  if (rank == 0) {
+    // The filesystem library and plain file calls: no shell ever sees the name.
+    const std::string what = "cannot write to the output directory '" + dir + "' (option -output_dir)";
+    std::error_code failed;
+    std::filesystem::create_directories(dir, failed);
+    if (failed) {
+      error = what + ": " + failed.message();
+    } else if (!std::filesystem::is_directory(dir, failed)) {
+      error = what + ": it exists and is not a directory";
+    } else {
+      const std::string probe = dir + "/.poroseam-write-test-" + std::to_string(getpid());
+      std::ofstream out(probe);
+      out << "poroseam\n";
+      out.close();
+      if (!out) error = what + ": cannot create a file in it";
+      std::filesystem::remove(probe, failed);
+    }
+  }
+  PetscCall(checkOnAllRanks(comm, error));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode checkTimeSteppingOptions(TS ts)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)ts);
+  PetscReal max_time;
+  PetscInt max_steps, max_reject = 0;
+  PetscBool set = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetMaxTime(ts, &max_time));
+  PetscCall(TSGetMaxSteps(ts, &max_steps));
+  PetscCheck(max_time > 0, comm, PETSC_ERR_USER_INPUT,
+             "-ts_max_time %g: must be > 0 (the time [s] the run ends at)", (double)max_time);
+  PetscCheck(max_steps > 0, comm, PETSC_ERR_USER_INPUT,
+             "-ts_max_steps %d: must be > 0 (the most steps the run may take)", (int)max_steps);
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ts_max_reject", &max_reject, &set));
+  PetscCheck(!set || max_reject >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-ts_max_reject %d: must be >= 0 (cuts of the time step allowed per step; a "
+             "negative number would halve the step without end)",
+             (int)max_reject);
+  PetscFunctionReturn(0);
+}
+
+std::string optionsWithValue(const std::string &value)
+{
+  std::vector<std::pair<std::string, std::string>> options;
+  if (allOptions(options)) return "";
+  std::string names;
+  for (const auto &[name, v] : options)
+    if (v == value) names += (names.empty() ? "-" : " or -") + name;
+  return names;
+}
+
+} // namespace poroseam
