@@ -5,6 +5,8 @@
 // side 1 towards side 2, e2 and e3 tangent); gaps in m, stresses in Pa.
 #pragma once
 
+#include <vector>
+
 namespace poroseam::physics {
 
 enum class ContactState { open = 0, stick = 1, slip = 2 };
@@ -42,6 +44,15 @@ struct ContactResponse {
 ContactResponse contactResponse(const ContactParameters &p, const ContactInitial &initial,
                                 const ContactHistory &history, int tangential_dims,
                                 double gap_normal, const double gap_tangential[]);
+
+/// Where the law changes branch (open / stick / slip) along the straight gap path
+/// g(s) = g + s dg, 0 < s <= 1: appends every such s to `out` (unsorted). On each interval
+/// between them the traction is linear in s, so a Newton step's residual is piecewise linear
+/// along the step, with kinks only there (the line search of newton_control.cpp uses them).
+void contactStateChanges(const ContactParameters &p, const ContactInitial &initial,
+                         const ContactHistory &history, int tangential_dims, double gap_normal,
+                         const double gap_tangential[], double d_gap_normal,
+                         const double d_gap_tangential[], std::vector<double> &out);
 
 /// Mechanical opening o = max(0, g_N - g_N,0 - p'_N0 / K_N) [m]: zero while in contact.
 double mechanicalOpening(const ContactParameters &p, const ContactInitial &initial,

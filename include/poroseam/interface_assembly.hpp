@@ -51,7 +51,8 @@ struct InterfaceRates {
 
 class InterfaceAssembly {
 public:
-  /// Initial effective stress of a region at a point (for the initial contact pressure).
+  /// Initial total stress of a region at a point, sigma'_0 - alpha p_0 I (for the initial contact
+  /// pressure and shear).
   using InitialStress = std::function<void(const double x[], int region_tag, double s[3][3])>;
 
   /// Initial (hydrostatic) pore pressure at a point.
@@ -74,6 +75,11 @@ public:
   static constexpr int kHistoryValues = 4;
   std::vector<double> committedHistory() const;
   PetscErrorCode restoreHistory(const std::vector<double> &values);
+
+  /// Where the contact law of some integration point of this rank changes branch (open /
+  /// stick / slip) on the straight path from `local` (s = 0) to `local_end` (s = 1), both
+  /// with their boundary values: appends those s in (0, 1] to `out` (unsorted).
+  PetscErrorCode stateChanges(Vec local, Vec local_end, std::vector<double> &out) const;
 
   /// Visits every integration point of this rank with its state at `local`.
   PetscErrorCode visit(Vec local, const InterfaceRates &rates,

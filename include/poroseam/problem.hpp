@@ -4,6 +4,7 @@
 #pragma once
 
 #include "poroseam/closure_cache.hpp"
+#include "poroseam/geostatic.hpp"
 #include "poroseam/interface_assembly.hpp"
 #include "poroseam/log_events.hpp"
 #include "poroseam/reference_element.hpp"
@@ -99,9 +100,12 @@ private:
   };
   struct LoadedFace {
     PetscInt face;
-    int condition;
+    int condition; ///< index in scene.conditions, or kWaterLoad
     int element;
+    double normal[3]; ///< outward unit normal (water load only)
   };
+  /// LoadedFace::condition of a face of -water_load_boundaries.
+  static constexpr int kWaterLoad = -1;
   struct ConstrainedDof {
     PetscInt offset; ///< in the local vector
     int condition;
@@ -112,6 +116,15 @@ private:
   PetscErrorCode assembleResidual(double t, Vec local, Vec local_rate, const ResidualMode &mode,
                                   Vec f) const;
   void initialStress(const double x[], int region, double stress[3][3]) const;
+  /// Initial total stress sigma'_0 - alpha p_0 I (for the interfaces' initial contact).
+  void initialTotalStress(const double x[], int region, double stress[3][3]) const;
+  /// The geostatic column from the ground regions' vertical extents, checked (collective).
+  PetscErrorCode setupGeostatic(MPI_Comm comm, const std::vector<double> &bottom,
+                                const std::vector<double> &top);
+  /// Outward unit normal of a boundary face of `cell` (zero components beyond dim).
+  PetscErrorCode outwardNormal(PetscInt face, PetscInt cell, double normal[3]) const;
+  /// The faces of -water_load_boundaries with their outward normals, appended to faces_.
+  PetscErrorCode setupWaterLoad(const std::vector<char> &ghost, PetscInt pStart);
   double gravityVector(int d) const;
   /// Work vectors of one cell, kept across the cells of an assembly loop.
   struct CellWork {
@@ -133,6 +146,7 @@ private:
   std::vector<LoadedFace> faces_;
   std::vector<ConstrainedDof> constrained_;
   InterfaceAssembly interfaces_;
+  physics::GeostaticColumn column_; ///< hydrostatic pressure, geostatic stresses, water load
   double mass_balance_scale_ = 1.0;
   LogEvents events_;
 };

@@ -5,6 +5,7 @@
 
 #include "poroseam/time_function.hpp"
 #include <array>
+#include <optional>
 #include <petscsys.h>
 #include <string>
 #include <vector>
@@ -32,7 +33,11 @@ struct Region {
   double biot_coefficient = 1.0; ///< alpha [-] (biot)
   double storage = 0.0;          ///< 1/M [1/Pa] (biot)
   double k0 = 1.0;               ///< earth pressure coefficient at rest (geostatic state)
+  /// Part of the ground column of the geostatic state (-region_<r>_ground); unset: porous
+  /// regions are ground, elastic ones are structures without initial stress.
+  std::optional<bool> ground;
   bool porous() const { return model == MaterialModel::biot; }
+  bool inGround() const { return ground.value_or(porous()); }
 };
 
 enum class BcKind { displacement, pressure, traction, flux, interface_pressure };
@@ -96,6 +101,9 @@ struct Scene {
   bool geostatic = false;         ///< K0 initial state
   double surface_elevation = 0.0; ///< soil surface [m] for the geostatic state
   double water_level = 0.0;       ///< phreatic level [m] for the hydrostatic pressure
+  /// Boundaries the free water above the ground stands on (-water_load_boundaries): they carry
+  /// its pressure rho_w g (water_level - z) for the whole run.
+  std::vector<Boundary> water_load_boundaries;
   double fluid_density = 1000.0;  ///< rho_w [kg/m3]
   double fluid_viscosity = 1e-3;  ///< mu_w [Pa s]
   double stabilization_factor = 0.25;

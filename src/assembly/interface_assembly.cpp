@@ -448,6 +448,35 @@ PetscErrorCode InterfaceAssembly::restoreHistory(const std::vector<double> &valu
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode InterfaceAssembly::stateChanges(Vec local, Vec local_end,
+                                               std::vector<double> &out) const
+{
+  std::vector<double> gaps(3 * committed_.size(), 0.0);
+  PetscFunctionBeginUser;
+  PetscCall(loop(local, InterfaceRates{},
+                 [&](const Cell &cell, int q, const double *, const InterfacePointState &st,
+                     const FlowPoint &, const double[3][3], int) -> PetscErrorCode {
+                   double *g = &gaps[3 * (cell.history + q)];
+                   g[0] = st.gap_normal, g[1] = st.gap_tangential[0], g[2] = st.gap_tangential[1];
+                   return 0;
+                 }));
+  PetscCall(loop(local_end, InterfaceRates{},
+                 [&](const Cell &cell, int q, const double *, const InterfacePointState &st,
+                     const FlowPoint &, const double[3][3], int) -> PetscErrorCode {
+                   const size_t h = cell.history + q;
+                   const double *g = &gaps[3 * h];
+                   const double d[3] = {st.gap_normal - g[0], st.gap_tangential[0] - g[1],
+                                        st.gap_tangential[1] - g[2]};
+                   const Interface &in = scene_->interfaces[cell.iface];
+                   const physics::ContactParameters params{in.normal_stiffness,
+                                                           in.tangential_stiffness, in.friction};
+                   physics::contactStateChanges(params, initial_[h], committed_[h], dim_ - 1, g[0],
+                                                g + 1, d[0], d + 1, out);
+                   return 0;
+                 }));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode InterfaceAssembly::visit(
     Vec local, const InterfaceRates &rates,
     const std::function<void(int, int, PetscInt, const InterfacePointState &)> &f) const

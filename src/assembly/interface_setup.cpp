@@ -210,8 +210,11 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
         e3[2] = e1[0] * e2[1] - e1[1] * e2[0];
       }
     }
-    // Initial state at each integration point, from the side-1 initial stress:
-    // p'_N0 = -e1 . sigma'_0 e1, tau_0k = e_(k+1) . sigma'_0 e1 (capped by friction).
+    // Initial state at each integration point, from the side-1 initial total stress
+    // sigma_0 = sigma'_0 - alpha p_0 I: the faces carry sigma_0 e1 = -(p'_N0 + p_gap) e1 + tau_0,
+    // p_gap the water pressure in the gap (p3 with flow, the pore pressure of a drained scene's
+    // gap water, none otherwise), so p'_N0 = -e1 . sigma_0 e1 - p_gap and
+    // tau_0k = e_(k+1) . sigma_0 e1 (capped by friction): in equilibrium for any alpha.
     cell.history = initial_.size();
     for (int q = 0; q < e.num_quadrature; ++q) {
       double x[3] = {0, 0, 0}, s0[3][3];
@@ -228,6 +231,7 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
       double pn = 0.0;
       for (int i = 0; i < 3; ++i)
         pn -= cell.frame[0][i] * traction[i];
+      if (scene.geostatic && (cell.flow || cell.gap_water)) pn -= initial_pressure_(x);
       init.contact_pressure_effective = std::max(pn, 0.0);
       double tau[2] = {0, 0}, norm = 0.0;
       for (int k = 0; k < dim_ - 1; ++k) {

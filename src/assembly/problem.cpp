@@ -53,7 +53,7 @@ double Problem::gravityVector(int d) const
 double Problem::initialPressure(const double x[]) const
 {
   if (scene_->gravity <= 0.0) return 0.0;
-  return scene_->fluid_density * scene_->gravity * (scene_->water_level - x[dim_ - 1]);
+  return physics::hydrostaticPressure(column_, x[dim_ - 1]);
 }
 
 void Problem::initialStress(const double x[], int region, double stress[3][3]) const
@@ -62,16 +62,187 @@ void Problem::initialStress(const double x[], int region, double stress[3][3]) c
     for (int j = 0; j < 3; ++j)
       stress[i][j] = 0.0;
   const Region &r = scene_->regions[region];
-  if (!scene_->geostatic || !r.porous()) return;
-  // K0 state: sigma'_v = -gamma' depth below the surface, sigma'_h = K0 sigma'_v.
-  const double rho_sat =
-      physics::saturatedDensity(r.porosity, r.solid_density, scene_->fluid_density);
-  const double buoyant = (rho_sat - scene_->fluid_density) * scene_->gravity;
-  const double depth = std::max(0.0, scene_->surface_elevation - x[dim_ - 1]);
-  const double vertical = -buoyant * depth;
+  // Structures (regions outside the ground column) start unstressed: their weight is a load.
+  if (!scene_->geostatic || !r.inGround()) return;
+  physics::geostaticStress(column_, x[dim_ - 1], r.k0, r.porous() ? r.biot_coefficient : 0.0,
+                           dim_, stress);
+}
+
+void Problem::initialTotalStress(const double x[], int region, double stress[3][3]) const
+{
+  initialStress(x, region, stress);
+  const Region &r = scene_->regions[region];
+  if (!scene_->geostatic || !r.inGround() || !r.porous()) return;
+  const double p = initialPressure(x);
   for (int i = 0; i < 3; ++i)
-    stress[i][i] = r.k0 * vertical;
-  stress[dim_ - 1][dim_ - 1] = vertical;
+    stress[i][i] -= r.biot_coefficient * p;
+}
+
+PetscErrorCode Problem::setupGeostatic(MPI_Comm comm, const std::vector<double> &bottom,
+                                       const std::vector<double> &top)
+{
+  const Scene &scene = *scene_;
+  PetscFunctionBeginUser;
+  std::vector<double> lo(bottom.size()), hi(top.size());
+  PetscCallMPI(MPI_Allreduce(bottom.data(), lo.data(), (int)lo.size(), MPI_DOUBLE, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(top.data(), hi.data(), (int)hi.size(), MPI_DOUBLE, MPI_MAX, comm));
+  std::vector<physics::GroundRegion> ground;
+  double lowest = scene.surface_elevation;
+  for (size_t i = 0; i < scene.regions.size(); ++i) {
+    const Region &r = scene.regions[i];
+    if (!r.inGround() || lo[i] > hi[i]) continue; // a structure, or a region with no cells
+    physics::GroundRegion g;
+    g.name = r.name;
+    g.bottom = lo[i];
+    g.top = hi[i];
+    // The density the cell kernel weighs the region with.
+    g.density = r.porous()
+                    ? physics::saturatedDensity(r.porosity, r.solid_density, scene.fluid_density)
+                    : r.solid_density;
+    g.k0 = r.k0;
+    g.alpha = r.porous() ? r.biot_coefficient : 0.0;
+    ground.push_back(g);
+    lowest = std::min(lowest, g.bottom);
+  }
+  // Elevations of one mesh closer than this are the same (Gmsh writes ~16 digits).
+  const double tolerance = 1e-9 * std::max(1.0, scene.surface_elevation - lowest);
+  std::string error =
+      physics::buildGeostaticLayers(ground, scene.surface_elevation, tolerance, column_.layers);
+
+  // A ground face on the outer boundary that faces upwards is part of the ground surface: it
+  // must lie on the plane z = z_s, or the column above its points is not what the layers say
+  // (a slope, a step, an excavation).
+  // Outer boundary faces: one bulk cell in their support on this rank and on no other (the
+  // point SF: not a leaf, and no other rank's leaf points to it).
+  PetscSF sf;
+  PetscInt nroots, nleaves, pStart, pEnd, fStart, fEnd;
+  const PetscInt *leaves, *degree = nullptr;
+  PetscCall(DMGetPointSF(dm_, &sf));
+  PetscCall(PetscSFGetGraph(sf, &nroots, &nleaves, &leaves, nullptr));
+  PetscCall(DMPlexGetChart(dm_, &pStart, &pEnd));
+  std::vector<char> shared(pEnd - pStart, 0);
+  for (PetscInt i = 0; i < (nleaves > 0 ? nleaves : 0); ++i)
+    shared[(leaves ? leaves[i] : i) - pStart] = 1;
+  if (nroots >= 0) {
+    PetscCall(PetscSFComputeDegreeBegin(sf, &degree));
+    PetscCall(PetscSFComputeDegreeEnd(sf, &degree));
+    for (PetscInt p = 0; p < nroots; ++p)
+      if (degree[p] > 0) shared[p] = 1;
+  }
+  DMLabel cellSets;
+  PetscCall(DMGetLabel(dm_, "Cell Sets", &cellSets));
+  Vec coords;
+  PetscSection csec;
+  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
+  PetscCall(DMGetCoordinateSection(dm_, &csec));
+  PetscCall(DMPlexGetHeightStratum(dm_, 1, &fStart, &fEnd));
+  for (PetscInt f = fStart; f < fEnd && error.empty(); ++f) {
+    const PetscInt *support;
+    PetscInt ns, tag = -1;
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetSupportSize(dm_, f, &ns));
+    if (ns != 1 || shared[f - pStart]) continue;
+    PetscCall(DMPlexGetSupport(dm_, f, &support));
+    PetscCall(DMPlexGetCellType(dm_, support[0], &ct));
+    if (isCohesive(ct)) continue; // a lateral face of an interface
+    if (cellSets) PetscCall(DMLabelGetValue(cellSets, support[0], &tag));
+    const int region = scene.regionIndexOfTag((int)tag);
+    if (region < 0 || !scene.regions[region].inGround()) continue;
+    double normal[3];
+    PetscCall(outwardNormal(f, support[0], normal));
+    if (normal[dim_ - 1] < 1e-6) continue; // vertical or downward: not the surface
+    PetscScalar *x = nullptr;
+    PetscInt nx = 0;
+    PetscCall(DMPlexVecGetClosure(dm_, csec, coords, f, &nx, &x));
+    for (PetscInt a = dim_ - 1; a < nx; a += dim_)
+      if (std::abs(x[a] - scene.surface_elevation) > tolerance && error.empty()) {
+        std::ostringstream msg;
+        msg << "region '" << scene.regions[region].name
+            << "' has an upward-facing outer boundary face at z = " << x[a]
+            << ", not on the soil surface " << scene.surface_elevation
+            << " (-surface_elevation): the geostatic state is exact only for a horizontal "
+               "ground surface";
+        error = msg.str();
+      }
+    PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, f, &nx, &x));
+  }
+  PetscCall(checkOnAllRanks(comm, error.empty() ? error : "-initial_state geostatic: " + error));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::outwardNormal(PetscInt face, PetscInt cell, double normal[3]) const
+{
+  Vec coords;
+  PetscSection csec;
+  PetscScalar *xf = nullptr, *xc = nullptr;
+  PetscInt nf = 0, nc = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
+  PetscCall(DMGetCoordinateSection(dm_, &csec));
+  PetscCall(DMPlexVecGetClosure(dm_, csec, coords, face, &nf, &xf));
+  PetscCall(DMPlexVecGetClosure(dm_, csec, coords, cell, &nc, &xc));
+  std::vector<double> x(3 * (nf / dim_), 0.0);
+  for (PetscInt a = 0; a < nf / dim_; ++a)
+    for (int d = 0; d < dim_; ++d)
+      x[a * dim_ + d] = xf[a * dim_ + d];
+  faceNormal(x.data(), (int)(nf / dim_), dim_, normal);
+  // Orientation: from the cell's centroid to the face's (the cell is convex).
+  double out = 0.0, length = 0.0;
+  for (int d = 0; d < dim_; ++d) {
+    double cf = 0.0, cc = 0.0;
+    for (PetscInt a = 0; a < nf / dim_; ++a)
+      cf += xf[a * dim_ + d] / (double)(nf / dim_);
+    for (PetscInt a = 0; a < nc / dim_; ++a)
+      cc += xc[a * dim_ + d] / (double)(nc / dim_);
+    out += normal[d] * (cf - cc);
+    length += normal[d] * normal[d];
+  }
+  length = std::sqrt(length);
+  for (int d = 0; d < 3; ++d)
+    normal[d] = d < dim_ ? (out < 0.0 ? -normal[d] : normal[d]) / length : 0.0;
+  PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, cell, &nc, &xc));
+  PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, face, &nf, &xf));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::setupWaterLoad(const std::vector<char> &ghost, PetscInt pStart)
+{
+  DMLabel faceSets;
+  std::string error;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(dm_, "Face Sets", &faceSets));
+  for (const auto &b : scene_->water_load_boundaries) {
+    IS faces = nullptr;
+    if (faceSets) PetscCall(DMLabelGetStratumIS(faceSets, b.tag, &faces));
+    if (!faces) continue;
+    const PetscInt *idx;
+    PetscInt n;
+    PetscCall(ISGetLocalSize(faces, &n));
+    PetscCall(ISGetIndices(faces, &idx));
+    for (PetscInt k = 0; k < n; ++k) {
+      if (ghost[idx[k] - pStart]) continue;
+      const PetscInt *support;
+      PetscInt ns;
+      PetscCall(DMPlexGetSupportSize(dm_, idx[k], &ns));
+      PetscCall(DMPlexGetSupport(dm_, idx[k], &support));
+      if (ns != 1) {
+        // Inside the mesh the water would push both sides: it is not a free surface.
+        error = "-water_load_boundaries: boundary '" + b.name +
+                "' has faces inside the mesh; the water can only stand on the outer boundary";
+        break;
+      }
+      DMPolytopeType ct;
+      PetscCall(DMPlexGetCellType(dm_, idx[k], &ct));
+      LoadedFace f{idx[k], kWaterLoad, 0, {0, 0, 0}};
+      PetscCall(elementIndex(ct, &f.element));
+      PetscCall(outwardNormal(idx[k], support[0], f.normal));
+      faces_.push_back(f);
+    }
+    PetscCall(ISRestoreIndices(faces, &idx));
+    PetscCall(ISDestroy(&faces));
+  }
+  PetscCall(checkOnAllRanks(PetscObjectComm((PetscObject)dm_), error));
+  PetscFunctionReturn(0);
 }
 
 double Problem::loadFactor(double t) const
@@ -92,6 +263,10 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   cells_.clear();
   faces_.clear();
   constrained_.clear();
+  column_ = physics::GeostaticColumn{scene.surface_elevation, scene.water_level,
+                                     scene.fluid_density, scene.gravity, {}};
+  // Vertical extent of each region's cells on this rank (for the geostatic column).
+  std::vector<double> bottom(scene.regions.size(), 1e300), top(scene.regions.size(), -1e300);
 
   DMLabel cellSets;
   PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
@@ -122,6 +297,10 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     PetscScalar *x = nullptr;
     PetscInt n = 0;
     PetscCall(DMPlexVecGetClosure(dm, csec, coords, c, &n, &x));
+    for (PetscInt a = dim_ - 1; a < n; a += dim_) {
+      bottom[region] = std::min(bottom[region], (double)x[a]);
+      top[region] = std::max(top[region], (double)x[a]);
+    }
     double volume = 0.0;
     PointGeometry g;
     for (int q = 0; q < e.num_quadrature; ++q) {
@@ -148,6 +327,7 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     PetscCall(VecRestoreArrayRead(coords, &xa));
   }
   PetscCall(checkOnAllRanks(comm, error));
+  if (scene.geostatic) PetscCall(setupGeostatic(comm, bottom, top));
   {
     std::vector<PetscInt> points;
     points.reserve(cells_.size());
@@ -173,7 +353,7 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   PetscCall(interfaces_.setup(
       dm, scene,
       [this](const double x[], int tag, double s0[3][3]) {
-        initialStress(x, scene_->regionIndexOfTag(tag), s0);
+        initialTotalStress(x, scene_->regionIndexOfTag(tag), s0);
       },
       [this](const double x[]) { return initialPressure(x); }));
 
@@ -204,13 +384,14 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
       if (ghost[idx[k] - pStart]) continue;
       DMPolytopeType ct;
       PetscCall(DMPlexGetCellType(dm, idx[k], &ct));
-      LoadedFace f{idx[k], (int)i, 0};
+      LoadedFace f{idx[k], (int)i, 0, {0, 0, 0}};
       PetscCall(elementIndex(ct, &f.element));
       faces_.push_back(f);
     }
     PetscCall(ISRestoreIndices(faces, &idx));
     PetscCall(ISDestroy(&faces));
   }
+  PetscCall(setupWaterLoad(ghost, pStart));
 
   // Local offsets of constrained dofs and the condition that sets each.
   PetscSection s;
@@ -408,9 +589,10 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
   // Natural conditions: R_u -= int t . v, R_p += s int psi q_n.
   std::vector<double> F;
   for (const auto &face : faces_) {
-    const auto &bc = scene_->conditions[face.condition];
+    const bool water = face.condition == kWaterLoad;
+    const BoundaryCondition *bc = water ? nullptr : &scene_->conditions[face.condition];
     const ReferenceElement &e = elements_[face.element];
-    const double factor = bc.time.factor(t);
+    const double factor = water ? 1.0 : bc->time.factor(t);
     PetscScalar *xc = nullptr;
     PetscInt nc = 0, n = 0;
     PetscCall(DMPlexVecGetClosure(dm_, csec, coords, face.face, &nc, &xc));
@@ -428,12 +610,25 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
           r += phi[a] * xc[a * dim_];
         w *= 2.0 * M_PI * r;
       }
-      for (int a = 0; a < nv; ++a) {
-        if (bc.kind == BcKind::traction)
+      if (water) {
+        // The free water's pressure, t = -p_w n where the face is below the water level: a
+        // permanent load like gravity (no time function), balanced by the geostatic state.
+        double xq[3] = {0, 0, 0};
+        for (int a = 0; a < nv; ++a)
+          for (int d = 0; d < dim_; ++d)
+            xq[d] += phi[a] * xc[a * dim_ + d];
+        const double pw = std::max(0.0, initialPressure(xq));
+        for (int a = 0; a < nv; ++a)
           for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] -= w * phi[a] * bc.value[i] * factor;
-        else if (bc.kind == BcKind::flux && np == nv)
-          F[nu + a] += mode.mass_scale * w * phi[a] * bc.value[0] * factor;
+            F[a * dim_ + i] += w * phi[a] * pw * face.normal[i];
+        continue;
+      }
+      for (int a = 0; a < nv; ++a) {
+        if (bc->kind == BcKind::traction)
+          for (int i = 0; i < dim_; ++i)
+            F[a * dim_ + i] -= w * phi[a] * bc->value[i] * factor;
+        else if (bc->kind == BcKind::flux && np == nv)
+          F[nu + a] += mode.mass_scale * w * phi[a] * bc->value[0] * factor;
       }
     }
     PetscCall(DMPlexVecRestoreClosure(dm_, s, local, face.face, &n, &x));

@@ -64,6 +64,51 @@ ContactResponse contactResponse(const ContactParameters &p, const ContactInitial
   return r;
 }
 
+void contactStateChanges(const ContactParameters &p, const ContactInitial &initial,
+                         const ContactHistory &history, int tangential_dims, double gap_normal,
+                         const double gap_tangential[], double d_gap_normal,
+                         const double d_gap_tangential[], std::vector<double> &out)
+{
+  const int nt = tangential_dims;
+  // p'_N(s) = a + b s; contact where p'_N >= 0.
+  const double a = initial.contact_pressure_effective -
+                   p.normal_stiffness * (gap_normal - initial.gap_normal);
+  const double b = -p.normal_stiffness * d_gap_normal;
+  if (b != 0.0) {
+    const double s = -a / b;
+    if (s > 0.0 && s <= 1.0) out.push_back(s);
+  }
+  // Trial shear tau(s) = A + B s; yield |tau| = mu p'_N, i.e. the roots of
+  // |A + B s|^2 - mu^2 (a + b s)^2 = c0 + c1 s + c2 s^2 where p'_N(s) > 0.
+  double AA = 0.0, AB = 0.0, BB = 0.0;
+  for (int k = 0; k < nt; ++k) {
+    const double A = history.shear[k] +
+                     p.tangential_stiffness * (gap_tangential[k] - history.gap_tangential[k]);
+    const double B = p.tangential_stiffness * d_gap_tangential[k];
+    AA += A * A, AB += A * B, BB += B * B;
+  }
+  const double m2 = p.friction * p.friction;
+  const double c0 = AA - m2 * a * a, c1 = 2.0 * (AB - m2 * a * b), c2 = BB - m2 * b * b;
+  double roots[2];
+  int n = 0;
+  const double scale = std::fabs(c0) + std::fabs(c1) + std::fabs(c2);
+  if (scale == 0.0) return;
+  if (std::fabs(c2) <= 1e-14 * scale) {
+    if (c1 != 0.0) roots[n++] = -c0 / c1;
+  } else {
+    const double disc = c1 * c1 - 4.0 * c2 * c0;
+    if (disc < 0.0) return;
+    // Citardauq-safe roots.
+    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+    roots[n++] = q / c2;
+    if (q != 0.0) roots[n++] = c0 / q;
+  }
+  for (int i = 0; i < n; ++i) {
+    const double s = roots[i];
+    if (s > 0.0 && s <= 1.0 && a + b * s > 0.0) out.push_back(s);
+  }
+}
+
 double mechanicalOpening(const ContactParameters &p, const ContactInitial &initial,
                          double gap_normal)
 {

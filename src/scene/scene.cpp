@@ -175,6 +175,23 @@ PetscErrorCode readRegion(MPI_Comm comm, Region &r, bool gravity, bool drained)
   r.k0 = r.poisson / (1.0 - r.poisson);
   PetscCall(getReal(p + "K0", &r.k0, nullptr));
   PetscCheck(r.k0 >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sK0 = %g: must be >= 0", p.c_str(), r.k0);
+  {
+    // Read as text so that a bad value gets our one-line message, not PETSc's trace.
+    std::string ground;
+    PetscCall(getString(p + "ground", ground, &set));
+    if (set) {
+      std::string v = ground;
+      for (auto &ch : v)
+        ch = (char)std::tolower((unsigned char)ch);
+      const bool yes = v.empty() || v == "true" || v == "1" || v == "yes" || v == "on";
+      const bool no = v == "false" || v == "0" || v == "no" || v == "off";
+      PetscCheck(yes || no, comm, PETSC_ERR_USER_INPUT,
+                 "%sground %s: expected true or false (is region '%s' part of the ground column "
+                 "of the geostatic state)",
+                 p.c_str(), ground.c_str(), r.name.c_str());
+      r.ground = yes;
+    }
+  }
   if (r.porous()) {
     PetscCall(getReal(p + "porosity", &r.porosity, nullptr));
     PetscCheck(r.porosity >= 0.0 && r.porosity < 1.0, comm, PETSC_ERR_USER_INPUT,
@@ -526,6 +543,32 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   PetscCall(getReal("-surface_elevation", &scene.surface_elevation, nullptr));
   scene.water_level = scene.surface_elevation;
   PetscCall(getReal("-water_level", &scene.water_level, nullptr));
+  {
+    // The free water above the ground pushes on the boundaries it stands on; the geostatic
+    // state balances that load, so with water above the surface it must be applied.
+    std::vector<std::string> names_w;
+    PetscCall(getStringList("-water_load_boundaries", names_w, &set));
+    PetscCheck(!set || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
+               "-water_load_boundaries: the water's pressure needs -gravity > 0");
+    scene.water_load_boundaries.clear();
+    for (const auto &name : names_w) {
+      Boundary b;
+      b.name = name;
+      PetscCall(findPhysical(comm, names, dim - 1, name, "-water_load_boundaries", "boundary",
+                             &b.tag));
+      for (const auto &other : scene.water_load_boundaries)
+        PetscCheck(other.name != name, comm, PETSC_ERR_USER_INPUT,
+                   "-water_load_boundaries: '%s' is listed twice; list each boundary once",
+                   name.c_str());
+      scene.water_load_boundaries.push_back(b);
+    }
+    PetscCheck(!scene.geostatic || scene.water_level <= scene.surface_elevation ||
+                   !scene.water_load_boundaries.empty(),
+               comm, PETSC_ERR_USER_INPUT,
+               "-water_level %g is above -surface_elevation %g: the water's weight acts on the "
+               "soil surface; name the boundaries it stands on with -water_load_boundaries",
+               scene.water_level, scene.surface_elevation);
+  }
 
   // Regions: every one must be a cell group of the mesh and have a material.
   std::vector<std::string> list;

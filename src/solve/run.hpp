@@ -107,6 +107,9 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
                                PetscReal fnorm, SNESConvergedReason *reason, void *ctx);
 /// SNES initial guess (context: the Run).
 PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx);
+/// With contact interfaces, Newton's line search steps over the kinks of the contact law
+/// (kinkLineSearch; -snes_kink_linesearch 0 keeps PETSc's -snes_linesearch_type).
+PetscErrorCode configureLineSearch(Run &run, SNES snes);
 
 // run_ending.cpp: how the run ended.
 

@@ -483,6 +483,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
+  PetscCall(configureLineSearch(run, snes)); // contact kinks (newton_control.cpp)
   {
     KSP ksp;
     PetscReal rtol;

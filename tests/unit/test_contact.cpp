@@ -2,6 +2,7 @@
 // oblique sliding) and the consistent tangent against finite differences in every state.
 #include "poroseam/contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -125,3 +126,50 @@ INSTANTIATE_TEST_SUITE_P(
                       TangentCase{"slip3d", 2, -3e-6, 2e-4, 4e-4, ContactState::slip},
                       TangentCase{"open3d", 2, 5e-5, 2e-4, 4e-4, ContactState::open}),
     [](const auto &info) { return std::string(info.param.name); });
+
+// contactStateChanges: along g + s dg the branch (open / stick / slip) changes only at the
+// reported s, and at each reported s it does change (sampled on a fine grid), in 2D and 3D,
+// from stick, slip and open starts, with a history that has slipped.
+TEST(Contact, StateChangesAlongAStepAreTheKinks)
+{
+  ContactHistory h;
+  h.gap_tangential[0] = 2e-6, h.gap_tangential[1] = -1e-6;
+  h.shear[0] = 3e4, h.shear[1] = -2e4; // |tau_n| = 3.6e4 < mu p'_N0 = 5.7e4
+  unsigned seed = 12345;
+  auto uniform = [&seed](double a, double b) {
+    seed = seed * 1103515245u + 12345u;
+    return a + (b - a) * ((seed >> 8) & 0xffff) / 65535.0;
+  };
+  int changes_seen = 0;
+  for (int nt = 1; nt <= 2; ++nt)
+    for (int trial = 0; trial < 200; ++trial) {
+      const double gn = uniform(-2e-5, 2e-5), dgn = uniform(-4e-5, 4e-5);
+      const double gt[2] = {uniform(-1e-4, 1e-4), nt == 2 ? uniform(-1e-4, 1e-4) : 0.0};
+      const double dgt[2] = {uniform(-2e-4, 2e-4), nt == 2 ? uniform(-2e-4, 2e-4) : 0.0};
+      std::vector<double> kinks;
+      contactStateChanges(kParams, kInitial, h, nt, gn, gt, dgn, dgt, kinks);
+      auto state = [&](double s) {
+        const double g[2] = {gt[0] + s * dgt[0], gt[1] + s * dgt[1]};
+        return contactResponse(kParams, kInitial, h, nt, gn + s * dgn, g).state;
+      };
+      const int n = 4000;
+      for (int i = 0; i < n; ++i) {
+        const double a = double(i) / n, b = double(i + 1) / n;
+        bool reported = false;
+        for (double s : kinks)
+          reported = reported || (s > a - 1e-9 && s <= b + 1e-9);
+        if (state(a) != state(b)) {
+          ++changes_seen;
+          EXPECT_TRUE(reported) << "nt " << nt << " trial " << trial << ": change in [" << a
+                                << ", " << b << "] not reported";
+        }
+      }
+      for (double s : kinks) {
+        EXPECT_GT(s, 0.0);
+        EXPECT_LE(s, 1.0);
+        const double lo = std::max(0.0, s - 1e-6), hi = std::min(1.0, s + 1e-6);
+        EXPECT_NE(state(lo), state(hi)) << "nt " << nt << " trial " << trial << ": s = " << s;
+      }
+    }
+  EXPECT_GT(changes_seen, 100);
+}
