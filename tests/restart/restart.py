@@ -98,7 +98,13 @@ def interrupt(out, extra, ranks, after, sig):
         common.fail(f"the run ended (status {proc.returncode}) before step {after}: nothing to "
                     f"interrupt; see {out}/log.txt")
     if sig == signal.SIGKILL:
-        os.killpg(proc.pid, signal.SIGKILL)  # mpiexec and the ranks: nothing survives to clean up
+        # mpiexec and the ranks (Open MPI puts the ranks in process groups of their own, but
+        # they stay in the session): nothing survives to clean up
+        for pid in session_processes(proc.pid):
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
     else:
         # To the ranks themselves, as a batch system does (mpiexec would forward a SIGTERM but
         # kill the ranks a second later: docs/checkpoints.md).
@@ -108,6 +114,11 @@ def interrupt(out, extra, ranks, after, sig):
         for pid in ranks:
             os.kill(pid, sig)
     status = proc.wait(timeout=120)
+    start = time.time()
+    while poroseam_processes(proc.pid) and time.time() - start < 60:
+        time.sleep(0.05)
+    if poroseam_processes(proc.pid):
+        common.fail("poroseam processes of the interrupted run are still alive after 60 s")
     log.close()
     with open(os.path.join(out, "log.txt")) as f:
         return status, f.read()
@@ -115,6 +126,11 @@ def interrupt(out, extra, ranks, after, sig):
 
 def poroseam_processes(session):
     """The poroseam processes of a session (the run was started in a new one)."""
+    return session_processes(session, "poroseam")
+
+
+def session_processes(session, name=None):
+    """The processes of a session, those of executable `name` only if given."""
     found = []
     for pid in filter(str.isdigit, os.listdir("/proc")):
         try:
@@ -125,7 +141,7 @@ def poroseam_processes(session):
         except OSError:
             continue
         fields = stat[stat.rfind(")") + 2:].split()
-        if int(fields[3]) == session and os.path.basename(argv0) == "poroseam":
+        if int(fields[3]) == session and (name is None or os.path.basename(argv0) == name):
             found.append(int(pid))
     return found
 
