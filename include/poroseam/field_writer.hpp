@@ -19,8 +19,13 @@ public:
   FieldWriter &operator=(const FieldWriter &) = delete;
   ~FieldWriter();
 
-  /// Prepares `<dir>/<basename>.h5` and `<dir>/<basename>.xmf` for the solution DM.
-  PetscErrorCode open(DM solution_dm, const std::string &dir, const std::string &basename);
+  /// Prepares `<dir>/<basename>.h5` and `<dir>/<basename>.xmf` for the solution DM. With
+  /// `resume` (a restarted run), the files of the interrupted run are continued: their first
+  /// resume->size() times are kept and later ones are overwritten by the next writes.
+  PetscErrorCode open(DM solution_dm, const std::string &dir, const std::string &basename,
+                      const std::vector<double> *resume = nullptr);
+  /// Times written so far (for checkpoints).
+  std::vector<double> times() const;
   /// Appends one time: displacement, pressure (if any) and excess_pressure = pressure -
   /// initial_pressure. `local_solution` and `local_initial` are local vectors of solution_dm
   /// (with boundary values inserted); `local_initial` may be nullptr (then excess = pressure).

@@ -70,6 +70,11 @@ public:
                           Mat J) const;
   /// Stores the history of the converged state `local` (call after an accepted step only).
   PetscErrorCode commit(Vec local);
+  /// The committed history of this rank's integration points as plain numbers (for
+  /// checkpoints: kHistoryValues per point, in this rank's cell order), and back.
+  static constexpr int kHistoryValues = 4;
+  std::vector<double> committedHistory() const;
+  PetscErrorCode restoreHistory(const std::vector<double> &values);
 
   /// Where the contact law of some integration point of this rank changes branch (open /
   /// stick / slip) on the straight path from `local` (s = 0) to `local_end` (s = 1), both

@@ -35,8 +35,10 @@ public:
   ~InterfaceWriter();
 
   /// Prepares the files (nothing at all when the scene has no interfaces). `scene` must
-  /// outlive the writer.
-  PetscErrorCode open(MPI_Comm comm, const Scene &scene, const std::string &dir);
+  /// outlive the writer. With `resume` (a restarted run) the files of the interrupted run
+  /// are continued after their first resume->size() times (see FieldWriter::open).
+  PetscErrorCode open(MPI_Comm comm, const Scene &scene, const std::string &dir,
+                      const std::vector<double> *resume = nullptr);
   /// Appends one time: the interface state at `local_solution` (a local vector of the
   /// solution DM with boundary values inserted). `rates` (local rate vector and dt) are
   /// needed for the hydraulic fields: without rates.rate they are written as 0. Returns at

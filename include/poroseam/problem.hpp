@@ -70,6 +70,11 @@ public:
   /// Commits integration-point history (interfaces) of a converged state.
   PetscErrorCode commit(Vec local) { return interfaces_.commit(local); }
   const InterfaceAssembly &interfaces() const { return interfaces_; }
+  /// Restores committed integration-point history from a checkpoint.
+  PetscErrorCode restoreHistory(const std::vector<double> &values)
+  {
+    return interfaces_.restoreHistory(values);
+  }
 
   /// Factor S [Pa/m] that turns the mass balance times dt (a volume) into a force: the largest
   /// constrained modulus of the porous regions over their mean cell size. The solver

@@ -17,8 +17,8 @@ public:
   TimeIntegration &operator=(const TimeIntegration &) = delete;
 
   /// Before TSSetFromOptions: fixed steps unless -ts_adapt_type is given (TSBDF would adapt
-  /// by default), and for backward Euler the extrapolated Newton start (PETSc's theta
-  /// option; BDF extrapolates by itself).
+  /// by default), and whether Newton starts backward Euler's steps from the extrapolation of
+  /// the last increment (extrapolate(); BDF extrapolates by itself).
   PetscErrorCode beforeOptions(TS ts);
   /// After TSSetFromOptions: refuses integrators, orders and tolerances that are not
   /// supported, with the reason; with -ts_adapt_type basic sets up the per-field error
@@ -36,6 +36,8 @@ public:
   PetscErrorCode accept(double t, Vec previous, Vec global);
 
   bool adaptive() const { return adaptive_; }
+  /// Backward Euler: Newton starts from last state + dt/dt_last * last increment.
+  bool extrapolate() const { return extrapolate_; }
   bool bdf() const { return bdf_; }
   /// "backward Euler", "BDF2", ... for the progress lines.
   const char *name() const;
@@ -52,6 +54,7 @@ private:
   bool bdf_ = false;
   int order_ = 1;
   bool adaptive_ = false;
+  bool extrapolate_ = false;
   double rtol_ = 0.0;
   /// Times of the last two accepted states (accepted_ of them known) and the local state of
   /// the older one (the newer one is the caller's `previous`).

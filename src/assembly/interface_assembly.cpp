@@ -422,6 +422,32 @@ PetscErrorCode InterfaceAssembly::commit(Vec local)
   PetscFunctionReturn(0);
 }
 
+std::vector<double> InterfaceAssembly::committedHistory() const
+{
+  static_assert(sizeof(physics::ContactHistory) == kHistoryValues * sizeof(double),
+                "ContactHistory changed: update kHistoryValues and the copies below");
+  std::vector<double> values;
+  values.reserve(committed_.size() * kHistoryValues);
+  for (const auto &h : committed_)
+    values.insert(values.end(),
+                  {h.gap_tangential[0], h.gap_tangential[1], h.shear[0], h.shear[1]});
+  return values;
+}
+
+PetscErrorCode InterfaceAssembly::restoreHistory(const std::vector<double> &values)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(values.size() == committed_.size() * kHistoryValues, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "interface history of %zu values for %zu integration points", values.size(),
+             committed_.size());
+  for (size_t i = 0; i < committed_.size(); ++i) {
+    const double *v = &values[i * kHistoryValues];
+    committed_[i].gap_tangential[0] = v[0], committed_[i].gap_tangential[1] = v[1];
+    committed_[i].shear[0] = v[2], committed_[i].shear[1] = v[3];
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode InterfaceAssembly::stateChanges(Vec local, Vec local_end,
                                                std::vector<double> &out) const
 {

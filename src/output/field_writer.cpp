@@ -202,8 +202,13 @@ FieldWriter::~FieldWriter()
   }
 }
 
+std::vector<double> FieldWriter::times() const
+{
+  return impl_ ? impl_->times : std::vector<double>();
+}
+
 PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
-                                 const std::string &basename)
+                                 const std::string &basename, const std::vector<double> *resume)
 {
   MPI_Comm comm;
   PetscMPIInt rank;
@@ -370,7 +375,11 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   }
 
   // HDF5 file with geometry and topology.
-  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(), FILE_MODE_WRITE, &im.viewer));
+  // A restarted run appends: PETSc's HDF5 viewer overwrites datasets that exist (the same
+  // geometry and topology; field times after the checkpoint), so no stale time survives.
+  if (resume) im.times = *resume;
+  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(),
+                                resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
   PetscCall(im.writeVertexVec("/geometry", "vertices", im.cdim, xyz, 0.0, false));
   PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.corners, cells));
   PetscCall(PetscViewerFlush(im.viewer));

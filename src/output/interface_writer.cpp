@@ -544,7 +544,8 @@ InterfaceWriter::~InterfaceWriter()
   }
 }
 
-PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const std::string &dir)
+PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const std::string &dir,
+                                     const std::vector<double> *resume)
 {
   PetscFunctionBeginUser;
   PetscCheck(!impl_ || !impl_->viewer, comm, PETSC_ERR_ARG_WRONGSTATE,
@@ -563,8 +564,13 @@ PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const st
   PetscCall(xdmf::createDirectory(comm, dir, kWho));
   const std::string prefix = dir.empty() ? std::string("interfaces") : dir + "/interfaces";
   im.xmfPath = prefix + ".xmf";
-  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(), FILE_MODE_WRITE, &im.viewer));
-  PetscCall(im.writeXdmf());
+  // Resuming: the mesh is written again at the first write (PETSc's HDF5 viewer overwrites
+  // existing datasets), values after the checkpoint's last time are overwritten.
+  if (resume) im.times = *resume;
+  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(),
+                                resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
+  // (The interrupted run's index stays until the first write knows the mesh again.)
+  if (!resume) PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
 }
 
@@ -614,7 +620,8 @@ PetscErrorCode InterfaceWriter::close()
   PetscFunctionBeginUser;
   if (!impl_ || !impl_->viewer) PetscFunctionReturn(0);
   PetscCall(PetscViewerDestroy(&impl_->viewer));
-  PetscCall(impl_->writeXdmf());
+  // A resumed writer that wrote nothing does not know the mesh: keep the existing index.
+  if (impl_->mesh_written || impl_->times.empty()) PetscCall(impl_->writeXdmf());
   PetscFunctionReturn(0);
 }
 

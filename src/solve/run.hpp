@@ -12,8 +12,11 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/time_integration.hpp"
 
+#include "stop_request.hpp"
+
 #include <cstdio>
 #include <petscts.h>
+#include <string>
 #include <vector>
 
 namespace poroseam {
@@ -63,6 +66,16 @@ struct Run {
   /// (PsFirstJacobian) is behind us.
   LogEvents events;
   bool jacobian_assembled = false;
+  /// Newton's extrapolated start (backward Euler): the last accepted increment of the
+  /// unknowns (global) and the step it was taken over (0: none yet).
+  Vec last_increment = nullptr;
+  double last_dt = 0.0;
+  /// Checkpoints (checkpoint.hpp): every this many steps (0: only when a run stops early),
+  /// the step of the last one written (-1: none), and the signals that ask a run to stop.
+  int checkpoint_every = 0;
+  int checkpoint_step = -1;
+  StopRequest stop;
+  int stop_signal = 0; ///< the signal that stopped the run (0: none)
 };
 
 inline PetscErrorCode currentDt(Run &run, double *dt)
@@ -97,6 +110,12 @@ PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx);
 /// With contact interfaces, Newton's line search steps over the kinks of the contact law
 /// (kinkLineSearch; -snes_kink_linesearch 0 keeps PETSc's -snes_linesearch_type).
 PetscErrorCode configureLineSearch(Run &run, SNES snes);
+
+// run_ending.cpp: how the run ended.
+
+/// After TSSolve: the error message of a run that did not reach its final time (empty when it
+/// did), writing a checkpoint of its last accepted step if `checkpoints` and none exists.
+PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *message);
 
 } // namespace simulation_detail
 } // namespace poroseam

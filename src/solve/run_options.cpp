@@ -16,20 +16,46 @@ namespace {
 
 /// Integer options read by poroseam or by the PETSc objects it sets up, by their name without
 /// a solver prefix (-fieldsplit_displacement_ksp_max_it matches ksp_max_it).
-const char *const kIntegerOptions[] = {
-    "ts_max_steps",      "ts_max_reject",       "ts_max_snes_failures",
-    "ts_bdf_order",      "snes_max_it",         "snes_max_funcs",
-    "snes_max_fail",     "snes_max_linear_solve_fail", "snes_lag_jacobian",
-    "snes_lag_preconditioner", "ksp_max_it",    "ksp_gmres_restart",
-    "pc_mg_levels",      "pc_gamg_agg_nsmooths", "pc_hypre_boomeramg_max_iter",
-    "pc_hypre_boomeramg_max_levels", "solver_auto_threshold"};
+const char *const kIntegerOptions[] = {"ts_max_steps",
+                                       "ts_max_reject",
+                                       "ts_max_snes_failures",
+                                       "ts_bdf_order",
+                                       "snes_max_it",
+                                       "snes_max_funcs",
+                                       "snes_max_fail",
+                                       "snes_max_linear_solve_fail",
+                                       "snes_lag_jacobian",
+                                       "snes_lag_preconditioner",
+                                       "ksp_max_it",
+                                       "ksp_gmres_restart",
+                                       "pc_mg_levels",
+                                       "pc_gamg_agg_nsmooths",
+                                       "pc_hypre_boomeramg_max_iter",
+                                       "pc_hypre_boomeramg_max_levels",
+                                       "solver_auto_threshold",
+                                       "checkpoint_every",
+                                       "restart_step"};
 /// Real options, likewise.
-const char *const kRealOptions[] = {
-    "ts_dt",          "ts_max_time",     "ts_rtol",         "ts_atol",
-    "ts_adapt_dt_min", "ts_adapt_dt_max", "ts_adapt_safety", "ts_adapt_reject_safety",
-    "ts_adapt_scale_solve_failed", "ts_adapt_clip", "snes_rtol", "snes_atol",
-    "snes_stol",      "snes_divergence_tolerance", "snes_reference_rtol", "ksp_rtol",
-    "ksp_atol",       "ksp_divtol",      "test_fail_dt_above", "pc_factor_shift_amount"};
+const char *const kRealOptions[] = {"ts_dt",
+                                    "ts_max_time",
+                                    "ts_rtol",
+                                    "ts_atol",
+                                    "ts_adapt_dt_min",
+                                    "ts_adapt_dt_max",
+                                    "ts_adapt_safety",
+                                    "ts_adapt_reject_safety",
+                                    "ts_adapt_scale_solve_failed",
+                                    "ts_adapt_clip",
+                                    "snes_rtol",
+                                    "snes_atol",
+                                    "snes_stol",
+                                    "snes_divergence_tolerance",
+                                    "snes_reference_rtol",
+                                    "ksp_rtol",
+                                    "ksp_atol",
+                                    "ksp_divtol",
+                                    "test_fail_dt_above",
+                                    "pc_factor_shift_amount"};
 
 /// Every option set, as (name without '-', value) in the order PETSc lists them.
 PetscErrorCode allOptions(std::vector<std::pair<std::string, std::string>> &out)
@@ -138,7 +164,8 @@ PetscErrorCode checkOutputDirectory(MPI_Comm comm)
   std::string error;
   if (rank == 0) {
     // The filesystem library and plain file calls: no shell ever sees the name.
-    const std::string what = "cannot write to the output directory '" + dir + "' (option -output_dir)";
+    const std::string what =
+        "cannot write to the output directory '" + dir + "' (option -output_dir)";
     std::error_code failed;
     std::filesystem::create_directories(dir, failed);
     if (failed) {

@@ -2,6 +2,8 @@
 
 #include "run.hpp"
 
+#include "checkpoint.hpp"
+
 #include "poroseam/field_writer.hpp"
 #include "poroseam/interface_writer.hpp"
 #include "poroseam/interfaces.hpp"
@@ -18,9 +20,13 @@
 #include "poroseam/vertex_blocks.hpp"
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <petscts.h>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -94,32 +100,25 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode openTimeSeries(Run &run)
+/// The header line of timeseries.csv for this scene.
+std::string timeSeriesHeader(const Run &run)
 {
-  PetscMPIInt rank;
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)run.dm), &rank));
-  if (rank) PetscFunctionReturn(0);
-  const std::string path = run.scene.output_dir + "/timeseries.csv";
-  run.csv = std::fopen(path.c_str(), "w");
-  PetscCheck(run.csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s (option -output_dir)",
-             path.c_str());
+  std::ostringstream h;
   const char *axis[3] = {"x", "y", "z"};
-  std::fprintf(run.csv, "step,time,dt,load,newton_its,ksp_its,rejected,wall_time");
+  h << "step,time,dt,load,newton_its,ksp_its,rejected,wall_time";
   for (const auto &b : run.scene.boundaries) {
     for (int d = 0; d < run.scene.dim; ++d)
-      std::fprintf(run.csv, ",%s.F%s", b.name.c_str(), axis[d]);
-    if (run.scene.hasPressure()) std::fprintf(run.csv, ",%s.flux", b.name.c_str());
-    if (run.scene.hasInterfacePressure())
-      std::fprintf(run.csv, ",%s.interface_outflow", b.name.c_str());
+      h << "," << b.name << ".F" << axis[d];
+    if (run.scene.hasPressure()) h << "," << b.name << ".flux";
+    if (run.scene.hasInterfacePressure()) h << "," << b.name << ".interface_outflow";
   }
   // Interface blocks as interfaceResultants writes them, then the interface outflows.
   auto block = [&](const Interface &i, const std::string &name) {
     for (int d = 0; d < run.scene.dim; ++d)
-      std::fprintf(run.csv, ",%s.F%s", name.c_str(), axis[d]);
+      h << "," << name << ".F" << axis[d];
     if (i.flow)
-      std::fprintf(run.csv, ",%s.flux1,%s.flux2,%s.storage,%s.storage_rate,%s.p3_force",
-                   name.c_str(), name.c_str(), name.c_str(), name.c_str(), name.c_str());
+      for (const char *q : {"flux1", "flux2", "storage", "storage_rate", "p3_force"})
+        h << "," << name << "." << q;
   };
   for (const auto &i : run.scene.interfaces) {
     block(i, i.name);
@@ -128,13 +127,65 @@ PetscErrorCode openTimeSeries(Run &run)
         block(i, i.name + "." + s);
   }
   for (const auto &i : run.scene.interfaces)
-    if (i.flow) std::fprintf(run.csv, ",%s.outflow", i.name.c_str());
+    if (i.flow) h << "," << i.name << ".outflow";
   for (const auto &p : run.scene.probes) {
     for (int d = 0; d < run.scene.dim; ++d)
-      std::fprintf(run.csv, ",%s.u%s", p.name.c_str(), axis[d]);
-    std::fprintf(run.csv, ",%s.p", p.name.c_str());
+      h << "," << p.name << ".u" << axis[d];
+    h << "," << p.name << ".p";
   }
-  std::fprintf(run.csv, "\n");
+  return h.str();
+}
+
+/// Opens timeseries.csv (rank 0) for a new run (resume_step < 0), or, restarting from the
+/// checkpoint of step resume_step, keeps the interrupted run's rows of steps 0..resume_step
+/// (its later rows are dropped: the restarted run writes them again) and appends.
+PetscErrorCode openTimeSeries(Run &run, int resume_step)
+{
+  PetscMPIInt rank;
+  MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  const std::string path = run.scene.output_dir + "/timeseries.csv";
+  const std::string header = timeSeriesHeader(run);
+  // 0: fine, 1: cannot write, 2: missing or other columns, 3: rows missing (restart)
+  int status = 0;
+  if (rank == 0 && resume_step >= 0) {
+    std::ifstream in(path);
+    std::string line, kept;
+    int rows = 0;
+    if (!std::getline(in, line) || line != header) status = 2;
+    kept = line + "\n";
+    while (status == 0 && std::getline(in, line)) {
+      const int step = std::atoi(line.c_str());
+      if (step > resume_step) break;
+      kept += line + "\n", ++rows;
+    }
+    if (status == 0 && rows != resume_step + 1) status = 3;
+    if (status == 0) {
+      std::ofstream out(path + ".tmp", std::ios::trunc);
+      out << kept;
+      out.close();
+      std::error_code failed;
+      if (out) std::filesystem::rename(path + ".tmp", path, failed);
+      if (!out || failed) status = 1;
+    }
+  }
+  if (rank == 0 && status == 0) {
+    run.csv = std::fopen(path.c_str(), resume_step >= 0 ? "a" : "w");
+    if (!run.csv)
+      status = 1;
+    else if (resume_step < 0)
+      std::fprintf(run.csv, "%s\n", header.c_str());
+  }
+  PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
+  PetscCheck(status != 1, comm, PETSC_ERR_FILE_OPEN, "cannot write %s (option -output_dir)",
+             path.c_str());
+  PetscCheck(status != 2, comm, PETSC_ERR_USER_INPUT,
+             "-restart: %s is missing or has other columns than this scene writes: restart "
+             "with the scene of the interrupted run",
+             path.c_str());
+  PetscCheck(status != 3, comm, PETSC_ERR_USER_INPUT,
+             "-restart: %s lacks rows up to step %d of the checkpoint", path.c_str(), resume_step);
   PetscFunctionReturn(0);
 }
 
@@ -175,6 +226,22 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
         run.interface_fields.write(t, run.problem.interfaces(), local, InterfaceRates{rate, dt}));
   }
   PetscCall(endLogEvent(run.events.output));
+  PetscFunctionReturn(0);
+}
+
+/// Makes the next linear solve set up its direct (LU/Cholesky) preconditioner afresh.
+PetscErrorCode resetDirectSolver(TS ts)
+{
+  SNES snes;
+  KSP ksp;
+  PC pc;
+  PetscBool direct;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &direct, PCLU, PCCHOLESKY, ""));
+  if (direct) PetscCall(PCReset(pc));
   PetscFunctionReturn(0);
 }
 
@@ -226,13 +293,27 @@ PetscErrorCode postStep(TS ts)
   run.last_snes_its = snes_its, run.last_ksp_its = ksp_its, run.last_rejects = rejects;
   const double wall = MPI_Wtime() - run.step_start;
   PetscCall(recordStep(run, t, dt, local, rate, newton, krylov, rejected, wall));
+  // A checkpoint after this step: every checkpoint_every steps, and when a signal asks the
+  // run to stop (unless this was the last step anyway).
+  int signal = 0;
+  PetscCall(run.stop.pending(PetscObjectComm((PetscObject)ts), &signal));
+  if (signal && reason == TS_CONVERGED_ITERATING) {
+    run.stop_signal = signal;
+    PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));
+  }
+  const bool checkpoint =
+      (run.checkpoint_every > 0 && run.step % run.checkpoint_every == 0) || run.stop_signal;
   PetscCall(PetscPrintf(PetscObjectComm((PetscObject)ts),
                         "step %4d  t %11.5e s  dt %10.4e  load %6.4f  newton %2d  krylov %4d%s  "
-                        "%.2f s\n",
+                        "%.2f s%s\n",
                         run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)krylov,
-                        rejected ? "  (cut back)" : "", wall));
+                        rejected ? "  (cut back)" : "", wall, checkpoint ? "  checkpoint" : ""));
   PetscCall(run.problem.commit(local)); // only accepted steps reach here
   PetscCall(run.time.accept(t, run.previous, X));
+  // Newton's extrapolated start of the next step: this step's increment of the unknowns.
+  PetscCall(DMLocalToGlobal(run.dm, run.previous, INSERT_VALUES, run.last_increment));
+  PetscCall(VecAYPX(run.last_increment, -1.0, X));
+  run.last_dt = dt;
   PetscCall(VecCopy(local, run.previous));
   PetscCall(DMRestoreLocalVector(run.dm, &rate));
   PetscCall(DMRestoreLocalVector(run.dm, &local));
@@ -240,6 +321,18 @@ PetscErrorCode postStep(TS ts)
   // nominal size. Adaptive steps: TSAdapt has chosen the next step.
   if (!run.time.adaptive() && dt < run.nominal_dt)
     PetscCall(TSSetTimeStep(ts, std::min(run.nominal_dt, 2.0 * dt)));
+  if (checkpoint) {
+    std::string path;
+    PetscCall(beginLogEvent(run.events.output));
+    PetscCall(writeCheckpoint(run, X, &path));
+    PetscCall(endLogEvent(run.events.output));
+    run.checkpoint_step = run.step;
+    // A run restarted here factors its first matrix from scratch, and the direct solver's
+    // pivot order depends on that matrix's values (MUMPS's analysis); it would differ at
+    // round-off from this run, which reuses its analysis of step 1. Redo ours at the next step
+    // too, so that a restart continues this very computation.
+    PetscCall(resetDirectSolver(ts));
+  }
   run.step_start = MPI_Wtime();
   PetscFunctionReturn(0);
 }
@@ -303,6 +396,9 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(registerLogEvents(&run.events));
   run.problem.setLogEvents(run.events);
   PetscCall(readMeshOptions(comm, run.scene));
+  RestartOptions restart;
+  PetscCall(readCheckpointOptions(comm, run, &restart));
+  if (restart.restart) run.scene.output_dir = restart.dir; // the run continues where it was
   { // rank 0 creates it; every rank learns whether that worked, so none waits for the others
     std::error_code failed;
     if (rank == 0) std::filesystem::create_directories(run.scene.output_dir, failed);
@@ -313,6 +409,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
                "cannot create the output directory '%s' (option -output_dir)%s",
                run.scene.output_dir.c_str(), why.c_str());
   }
+  if (!restart.restart) PetscCall(clearEarlierRun(comm, run.scene.output_dir));
   std::vector<PhysicalName> names;
   int dim;
   PetscCall(beginLogPhase(run.events.mesh));
@@ -346,6 +443,14 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(DMCreateGlobalVector(run.dm, &X));
   PetscCall(PetscObjectSetName((PetscObject)X, "solution"));
   PetscCall(DMLocalToGlobal(run.dm, run.initial, INSERT_VALUES, X));
+  PetscCall(VecDuplicate(X, &run.last_increment));
+  PetscCall(VecSet(run.last_increment, 0.0));
+  CheckpointInfo resumed;
+  std::string checkpoint_path;
+  if (restart.restart) {
+    PetscCall(findCheckpoint(comm, restart.dir, restart.step, &checkpoint_path));
+    PetscCall(readCheckpoint(run, checkpoint_path, X, &resumed));
+  }
 
   PetscCall(TSCreate(comm, &run.ts));
   PetscCall(TSSetDM(run.ts, run.dm));
@@ -389,6 +494,15 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(TSGetTimeStep(run.ts, &run.nominal_dt));
   PetscCheck(run.nominal_dt > 0.0, comm, PETSC_ERR_USER_INPUT, "-ts_dt %g: must be > 0",
              run.nominal_dt);
+  if (restart.restart) {
+    // Where the checkpoint was: its time, its step count (-ts_max_steps counts all steps),
+    // and its next step (smaller than -ts_dt while growing back after a cut-back).
+    PetscCall(TSSetTime(run.ts, resumed.time));
+    PetscCall(TSSetStepNumber(run.ts, resumed.step));
+    PetscCall(TSSetTimeStep(run.ts, std::min(resumed.next_dt, run.nominal_dt)));
+    run.step = resumed.step;
+    run.checkpoint_step = resumed.step;
+  }
   {
     PetscReal t0;
     PetscCall(TSGetTime(run.ts, &t0));
@@ -397,6 +511,19 @@ PetscErrorCode runSimulation(MPI_Comm comm)
         PetscPrintf(comm, "time integration: %s, %s\n", run.time.name(),
                     run.time.adaptive() ? "adaptive steps (-ts_adapt_type basic)" : "fixed steps"));
   }
+  // BDF2 and TSAdapt keep their memory (earlier states, the last error) inside PETSc, where a
+  // checkpoint cannot reach it: a restart could not continue them exactly.
+  const bool checkpoints = !run.time.bdf() && !run.time.adaptive();
+  PetscCheck(checkpoints || (!restart.restart && run.checkpoint_every == 0), comm,
+             PETSC_ERR_USER_INPUT,
+             "%s: checkpoints and restarts are supported with backward Euler at fixed steps (the "
+             "default); %s%s keeps its history inside PETSc",
+             restart.restart ? "-restart" : "-checkpoint_every", run.time.name(),
+             run.time.adaptive() ? " with adaptive steps" : "");
+  if (restart.restart)
+    PetscCall(PetscPrintf(comm, "restart from %s: step %d, t = %g s; output continues in %s\n",
+                          checkpoint_path.c_str(), resumed.step, resumed.time,
+                          run.scene.output_dir.c_str()));
   // Set up now what TSSolve would at its first step (the Jacobian matrix and its
   // preallocation), so that -log_view counts it in the layout stage, not in the first step.
   PetscCall(TSSetSolution(run.ts, X));
@@ -422,13 +549,14 @@ PetscErrorCode runSimulation(MPI_Comm comm)
     PetscCall(DMRestoreLocalVector(run.dm, &zero));
   }
   PetscCall(beginLogEvent(run.events.output));
-  PetscCall(openTimeSeries(run));
+  PetscCall(openTimeSeries(run, restart.restart ? resumed.step : -1));
   if (run.scene.output_every > 0) {
-    PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields"));
-    PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir));
+    const std::vector<double> *times = restart.restart ? &resumed.output_times : nullptr;
+    PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields", times));
+    PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir, times));
   }
   PetscCall(endLogEvent(run.events.output));
-  {
+  if (!restart.restart) {
     // Row 0: the initial state.
     Vec rate;
     PetscCall(DMGetLocalVector(run.dm, &rate));
@@ -441,32 +569,22 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(TSSetErrorIfStepFails(run.ts, PETSC_FALSE));
   PetscCall(endLogPhase(run.events.layout));
   PetscCall(beginLogPhase(run.events.time_stepping));
+  PetscCall(run.stop.install());
   PetscCall(TSSolve(run.ts, X));
   PetscCall(endLogPhase(run.events.time_stepping));
-  TSConvergedReason reason;
-  PetscCall(TSGetConvergedReason(run.ts, &reason));
-  if (reason < 0) {
-    double t;
-    PetscInt rejects = 8;
-    PetscCall(TSGetTime(run.ts, &t));
-    PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ts_max_reject", &rejects, nullptr));
-    if (run.csv) std::fclose(run.csv);
-    PetscCall(run.fields.close());
-    PetscCall(run.interface_fields.close());
-    SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
-            "step %d failed (%s): Newton did not converge from t = %g s even after %d cuts of "
-            "the time step (last tried dt = %g s). Results up to t = %g s are in %s; a smaller "
-            "-ts_dt, more cuts (-ts_max_reject) or other solver options may help",
-            run.step + 1, TSConvergedReasons[reason], t, (int)rejects, run.attempted_dt, t,
-            run.scene.output_dir.c_str());
-  }
-  PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
-                        MPI_Wtime() - t0, run.scene.output_dir.c_str()));
+  PetscCall(run.stop.restore());
+  std::string message; // empty: the run reached its final time
+  PetscCall(describeEnding(run, X, checkpoints, &message));
+  if (message.empty())
+    PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
+                          MPI_Wtime() - t0, run.scene.output_dir.c_str()));
   PetscCall(beginLogEvent(run.events.output));
   if (run.csv) std::fclose(run.csv);
+  run.csv = nullptr;
   PetscCall(run.fields.close());
   PetscCall(run.interface_fields.close());
   PetscCall(endLogEvent(run.events.output));
+  PetscCall(VecDestroy(&run.last_increment));
   PetscCall(VecDestroy(&X));
   PetscCall(VecDestroy(&run.previous));
   PetscCall(VecDestroy(&run.jacobian_diagonal));
@@ -475,6 +593,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(TSDestroy(&run.ts));
   PetscCall(DMDestroy(&run.dm));
   PetscCall(reportUnusedOptions(comm));
+  PetscCheck(message.empty(), comm, PETSC_ERR_NOT_CONVERGED, "%s", message.c_str());
   PetscFunctionReturn(0);
 }
 

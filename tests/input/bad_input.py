@@ -148,6 +148,17 @@ CASES = {
     "ts_max_time_zero": dict(args=["-ts_max_time", "0"], expect=["-ts_max_time 0", "> 0"]),
     "ts_max_time_negative": dict(args=["-ts_max_time", "-5"], expect=["-ts_max_time -5", "> 0"]),
     "ts_max_steps_zero": dict(args=["-ts_max_steps", "0"], expect=["-ts_max_steps 0", "> 0"]),
+    # run endings and restarts (docs/checkpoints.md): a run that stops before its final time
+    # fails and says where; restart options that cannot be honoured are refused
+    "step_limit_before_final_time": dict(args=["-ts_max_steps", "2"],
+                                         expect=["stopped at step 2", "-ts_max_steps 2", "final time 25"]),
+    "checkpoint_every_negative": dict(args=["-checkpoint_every", "-1"], expect=["-checkpoint_every -1"]),
+    "checkpoint_every_abc": dict(args=["-checkpoint_every", "abc"], expect=["-checkpoint_every abc", "integer"]),
+    "checkpoint_with_bdf2": dict(args=["-ts_type", "bdf", "-ts_bdf_order", "2", "-checkpoint_every", "2"],
+                                 expect=["-checkpoint_every", "backward Euler"]),
+    "restart_missing_dir": dict(args=["-restart", "{out}/no_such_run"], expect=["-restart", "no_such_run", "no such directory"]),
+    "restart_no_checkpoint": dict(args=["-restart", "{out}"], expect=["-restart", "no checkpoint"]),
+    "restart_step_without_restart": dict(args=["-restart_step", "3"], expect=["-restart_step 3", "-restart"]),
     "ts_max_reject_negative": dict(args=["-ts_max_reject", "-1"], expect=["-ts_max_reject -1", ">= 0"]),
     "ts_dt_zero": dict(args=["-ts_dt", "0"], expect=["-ts_dt 0", "> 0"]),
     # --- mesh size: estimated before gmsh runs, limit -mesh_max_elements
@@ -195,42 +206,42 @@ CASES = {
     "error_in_log_stage_np2": dict(args=["-regions", "soil,rock", "-log_view", ":{out}/log.xml:ascii_xml"],
                                    expect=["'rock'"], absent_text=["parents", "Entry"], ranks=2),
     # good runs
-    "unused_option": dict(args=["-not_an_option", "3", "-ts_max_steps", "2"], ok=True,
+    "unused_option": dict(args=["-not_an_option", "3", "-ts_max_time", "0.4"], ok=True,
                           expect=["-not_an_option", "never used"]),
     # paths with shell characters are only ever file names: gmsh is run without a shell, so
     # the quote and the $(...) in the mesh path and output directory do nothing but name them
     "shell_characters_in_paths": dict(
         args=["-mesh", "{out}/it's $(touch pwned)/column.geo",
-              "-output_dir", "{out}/it's $(touch pwned)/results", "-ts_max_steps", "1"],
+              "-output_dir", "{out}/it's $(touch pwned)/results", "-ts_max_time", "0.2"],
         copy=("meshes/terzaghi_column_2d.geo", "it's $(touch pwned)/column.geo"), ok=True,
         expect=["1 steps"], absent=["pwned", "{out}/pwned", "{out}/it's $(touch pwned)/pwned"],
         present=["{out}/it's $(touch pwned)/results/timeseries.csv"]),
     # an output directory whose name is a shell command: created as a literal name, nothing run
-    "shell_output_dir": dict(args=["-output_dir", "{out}/o'; touch X; echo '", "-ts_max_steps", "1"],
+    "shell_output_dir": dict(args=["-output_dir", "{out}/o'; touch X; echo '", "-ts_max_time", "0.2"],
                              ok=True, expect=["1 steps"], absent=["X", "{out}/X", "{out}/o'; touch X; echo '/X"],
                              present=["{out}/o'; touch X; echo '/timeseries.csv"]),
     "shell_output_dir_backticks": dict(
-        args=["-output_dir", "{out}/a`touch Y`|b&c;$(touch Z) >w", "-ts_max_steps", "1"], ok=True,
+        args=["-output_dir", "{out}/a`touch Y`|b&c;$(touch Z) >w", "-ts_max_time", "0.2"], ok=True,
         expect=["1 steps"], absent=["Y", "Z", "w", "{out}/Y", "{out}/Z", "{out}/w"],
         present=["{out}/a`touch Y`|b&c;$(touch Z) >w/timeseries.csv"]),
     # valid meshes in every format the checker reads: it must not refuse them
-    "msh22_good": dict(msh=("22", "good"), args=["-ts_max_steps", "1"], ok=True, expect=["1 steps"]),
-    "msh41_good": dict(msh=("41", "good"), args=["-ts_max_steps", "1"], ok=True, expect=["1 steps"]),
-    "msh41_binary_good": dict(msh=("41b", "good"), args=["-ts_max_steps", "1"], ok=True,
+    "msh22_good": dict(msh=("22", "good"), args=["-ts_max_time", "0.2"], ok=True, expect=["1 steps"]),
+    "msh41_good": dict(msh=("41", "good"), args=["-ts_max_time", "0.2"], ok=True, expect=["1 steps"]),
+    "msh41_binary_good": dict(msh=("41b", "good"), args=["-ts_max_time", "0.2"], ok=True,
                               expect=["1 steps"]),
-    "msh22_binary_good": dict(msh=("22b", "good"), args=["-ts_max_steps", "1"], ok=True,
+    "msh22_binary_good": dict(msh=("22b", "good"), args=["-ts_max_time", "0.2"], ok=True,
                               expect=["1 steps"]),
     "gmsh_msh41_files": dict(gmsh_formats=True, ok=True, expect=["1 steps"]),
     # a mesh size factor below 0.5 that is fine: estimated, then meshed
-    "mesh_size_factor_fine": dict(args=["-mesh_size_factor", "0.25", "-ts_max_steps", "1"], ok=True,
+    "mesh_size_factor_fine": dict(args=["-mesh_size_factor", "0.25", "-ts_max_time", "0.2"], ok=True,
                                   expect=["1 steps"]),
     # a killed run takes gmsh with it (the child dies with its parent: PR_SET_PDEATHSIG)
     "gmsh_dies_with_run": dict(gmsh_kill=True, ok=True, expect=[]),
     # nothing leaks (PETSc's -malloc_dump lists what was not freed at PetscFinalize)
-    "malloc_dump_clean": dict(args=["-ts_max_steps", "2", "-malloc_dump"], ok=True, expect=["2 steps"],
+    "malloc_dump_clean": dict(args=["-ts_max_time", "0.4", "-malloc_dump"], ok=True, expect=["2 steps"],
                               absent_text=["PetscMalloc", "bytes "]),
     "malloc_dump_clean_interface_np2": dict(
-        scene=JOINT_SCENE, args=["-ts_max_steps", "2", "-malloc_dump", "-bc_left_p3", "0"], ok=True,
+        scene=JOINT_SCENE, args=["-ts_max_time", "0.4", "-malloc_dump", "-bc_left_p3", "0"], ok=True,
         expect=["2 steps"], absent_text=["PetscMalloc", "bytes "], ranks=2),
     "help": dict(help=True, ok=True,
                  expect=["-region_<r>_E", "-region_<r>_permeability", "-bc_<b>_traction",
@@ -354,7 +365,7 @@ def gmsh_formats(out):
                        ["-o", msh, os.path.join(SOURCE, "meshes", "terzaghi_column_2d.geo")],
                        check=True, stdout=subprocess.DEVNULL)
         p = subprocess.run([EXE, "-options_file", BASE_SCENE, "-output_dir", out, "-mesh", msh,
-                            "-ts_max_steps", "1"], cwd=SOURCE, stdout=subprocess.PIPE,
+                            "-ts_max_time", "0.2"], cwd=SOURCE, stdout=subprocess.PIPE,
                            stderr=subprocess.STDOUT, timeout=TIMEOUT)
         text += f"[{os.path.basename(msh)}]\n" + p.stdout.decode(errors="replace")
         rc = rc or p.returncode

@@ -4,8 +4,8 @@
     user_scenes.py [--steps 3]
 
 Each scene is run from the repository root exactly as its header says
-(`build/poroseam -options_file options/<scene>.opts`, only -output_dir and -ts_max_steps
-added), and must exit 0, write timeseries.csv with a row per step, and leave no option
+(`build/poroseam -options_file options/<scene>.opts`, only -output_dir and -ts_max_time =
+steps x the scene's -ts_dt added, so that it ends early but at its final time), and must exit 0, write timeseries.csv with a row per step, and leave no option
 unused ("was given but never used": a misspelt option in an example would teach users the
 wrong name).
 """
@@ -35,7 +35,16 @@ def main():
         rel = os.path.relpath(path, SOURCE)
         name = os.path.splitext(os.path.basename(path))[0]
         out = os.path.join(OUTPUT_ROOT, "user_scenes", name)
-        cmd = [EXE, "-options_file", rel, "-output_dir", out, "-ts_max_steps", str(a.steps)]
+        dt = None
+        with open(path) as f:
+            for line in f:
+                parts = line.split("#", 1)[0].split()
+                if len(parts) == 2 and parts[0] == "-ts_dt":
+                    dt = float(parts[1])
+        if dt is None:
+            failures.append(f"{rel}: no -ts_dt")
+            continue
+        cmd = [EXE, "-options_file", rel, "-output_dir", out, "-ts_max_time", repr(a.steps * dt)]
         t0 = time.time()
         try:
             # A guard against hangs, not a timing test: the 3D caisson scenes run their 37k-

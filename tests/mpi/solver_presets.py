@@ -43,15 +43,15 @@ CASES = {
     # the Terzaghi column made elastic: no pressure field, the fieldsplit preset must still
     # work (its -fieldsplit_pressure_* options are then reported as unused)
     "elastic_2d": dict(scene="tests/verification/terzaghi_2d.opts", elastic=True,
-                       args=["-probe_top", "0.1,1", "-ts_max_steps", "5", "-output_fields_every", "1"]),
+                       args=["-probe_top", "0.1,1", "-ts_max_time", "1", "-output_fields_every", "1"]),
     # interfaces: friction (block shear), and hydraulics with three fields (u, p, p3): a stiff
     # joint (K_N h / E = 5000, T = 1e-3) in a consolidating column, and a gap storage scene
     "block_shear_2d": dict(scene="options/block_shear_2d.opts", args=["-output_fields_every", "10"]),
     "joint_column_2d": dict(scene="tests/hydraulics/joint_column_2d.opts",
-                            args=["-ts_max_steps", "20", "-probe_low", "0.05,0.25", "-probe_high", "0.05,0.75", "-output_fields_every", "10"]),
+                            args=["-ts_max_time", "4", "-probe_low", "0.05,0.25", "-probe_high", "0.05,0.75", "-output_fields_every", "10"]),
     # the joint with caisson-like interface values (K_N = 1e10 Pa/m, T = 1e-8 m/(Pa s))
     "joint_realistic_2d": dict(scene="tests/hydraulics/joint_column_2d.opts",
-                               args=["-ts_max_steps", "20", "-interface_joint_KN", "1e10",
+                               args=["-ts_max_time", "4", "-interface_joint_KN", "1e10",
                                      "-interface_joint_KT", "1e10", "-interface_joint_T1", "1e-8",
                                      "-interface_joint_T2", "1e-8", "-probe_low", "0.05,0.25",
                                      "-output_fields_every", "10"]),

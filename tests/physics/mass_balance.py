@@ -24,7 +24,7 @@ for dim, ranks in ((2, 1), (2, 2), (3, 1)):
     top = "0.05,1" if dim == 2 else "0.05,0.05,1"
     axis = "y" if dim == 2 else "z"
     out = common.output_dir(f"mass_balance_{dim}d_{ranks}")
-    extra = ["-ts_max_steps", 40, "-probe_top", top]
+    extra = ["-ts_max_time", 8, "-probe_top", top]  # 40 steps of 0.2 s
     if dim == 3:
         extra += ["-mesh_size_factor", 2]
     common.run(scene, out, extra, ranks=ranks)
@@ -41,7 +41,7 @@ for dim, ranks in ((2, 1), (2, 2), (3, 1)):
 scene = common.scene_path("terzaghi_2d.opts")
 out = common.output_dir("mass_balance_injection")
 inflow = -1e-7  # m/s outward, i.e. 1e-7 m/s into the soil
-common.run(scene, out, ["-ts_max_steps", 30, "-bc_top_traction", "0,0", "-bc_bottom_flux", inflow,
+common.run(scene, out, ["-ts_max_time", 6, "-bc_top_traction", "0,0", "-bc_bottom_flux", inflow,
                         "-probe_top", "0.05,1"])
 ts = common.read_timeseries(out)
 injected = -inflow * 0.1 * ts["time"][-1]

@@ -26,7 +26,7 @@ q, H, E, nu, k, mu = 1e4, 1.0, 1e7, 0.25, 1e-12, 1e-3
 failures = []
 
 out = common.output_dir("cutback")
-common.run(SCENE, out, ["-ts_max_steps", 20, "-test_fail_dt_above", 0.06, "-probe_mid", "0.05,0.5"])
+common.run(SCENE, out, ["-ts_max_time", 1, "-test_fail_dt_above", 0.06, "-probe_mid", "0.05,0.5"])
 ts = common.read_timeseries(out)
 dt = ts["dt"]
 rejected = ts["rejected"]

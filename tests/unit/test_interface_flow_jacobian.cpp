@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 #include <random>
 #include <string>
+#include <unistd.h> // getpid: a mesh directory per test process (ctest runs them in parallel)
 
 using namespace poroseam;
 
@@ -28,8 +29,8 @@ struct FlowCase {
   const char *name;
   const char *mesh;
   double size_factor;
-  double gap_normal; ///< block displacement along the last axis (+: opening)
-  double t2;         ///< transmissivity to side 2 (0: impervious)
+  double gap_normal;              ///< block displacement along the last axis (+: opening)
+  double t2;                      ///< transmissivity to side 2 (0: impervious)
   double rate_factor = 1.0;       ///< a: dx/dt = a (x - x_prev) / dt, shift a / dt
   double previous_fraction = 0.5; ///< gap of x_prev as a fraction of gap_normal
 };
@@ -80,7 +81,8 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
   PetscCall(setOption("-interface_contact_T2", t2));
   PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
   PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
-                         testing::TempDir() + "poroseam_mesh", &dm, &names, &dim));
+                         testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
+                         &names, &dim));
   PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
   PetscCall(splitInterfaces(&dm, scene));
   PetscCall(markLayoutLabels(dm, scene));

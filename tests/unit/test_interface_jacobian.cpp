@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <random>
 #include <string>
+#include <unistd.h> // getpid: a mesh directory per test process (ctest runs them in parallel)
 
 using namespace poroseam;
 
@@ -59,7 +60,8 @@ PetscErrorCode compare(const Case &c, double *relative_error, int *states)
   PetscCall(setOption("-interface_contact_integration", c.integration));
   PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
   PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
-                         testing::TempDir() + "poroseam_mesh", &dm, &names, &dim));
+                         testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
+                         &names, &dim));
   PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
   PetscCall(splitInterfaces(&dm, scene));
   PetscCall(markLayoutLabels(dm, scene));

@@ -1,0 +1,347 @@
+#include "checkpoint.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <petscviewerhdf5.h>
+#include <regex>
+#include <vector>
+
+namespace poroseam {
+namespace simulation_detail {
+namespace {
+
+/// Format of the file; a checkpoint of another version is refused, not misread.
+constexpr PetscInt kVersion = 1;
+
+std::string checkpointDir(const std::string &output_dir)
+{
+  return output_dir + "/checkpoints";
+}
+
+std::string checkpointName(int step)
+{
+  char name[32];
+  std::snprintf(name, sizeof(name), "step-%06d.h5", step);
+  return name;
+}
+
+/// What ties the checkpoint to a partition: per rank, the owned unknowns, the history values
+/// and the 1-norm of the rank's local vertex coordinates (which vertices it holds).
+PetscErrorCode layoutOf(Run &run, Vec X, double layout[3])
+{
+  PetscInt n;
+  Vec coordinates;
+  PetscReal norm;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(X, &n));
+  PetscCall(DMGetCoordinatesLocal(run.dm, &coordinates));
+  PetscCall(VecNorm(coordinates, NORM_1, &norm));
+  layout[0] = (double)n;
+  layout[1] = (double)run.problem.interfaces().committedHistory().size();
+  layout[2] = norm;
+  PetscFunctionReturn(0);
+}
+
+/// A plain MPI vector of `local` entries (not the DM's: DMPlex's VecView/VecLoad would move
+/// the data into its own groups and orderings).
+PetscErrorCode plainVec(MPI_Comm comm, PetscInt local, const char *name, Vec *v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCreateMPI(comm, local, PETSC_DETERMINE, v));
+  PetscCall(PetscObjectSetName((PetscObject)*v, name));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeValues(PetscViewer viewer, MPI_Comm comm, const char *name,
+                           const double *values, PetscInt n)
+{
+  Vec v;
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(plainVec(comm, n, name, &v));
+  PetscCall(VecGetArray(v, &a));
+  for (PetscInt i = 0; i < n; ++i)
+    a[i] = values[i];
+  PetscCall(VecRestoreArray(v, &a));
+  PetscCall(VecView(v, viewer));
+  PetscCall(VecDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeVec(PetscViewer viewer, const char *name, Vec x)
+{
+  const PetscScalar *a;
+  PetscInt n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArrayRead(x, &a));
+  PetscCall(writeValues(viewer, PetscObjectComm((PetscObject)x), name, a, n));
+  PetscCall(VecRestoreArrayRead(x, &a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readValues(PetscViewer viewer, MPI_Comm comm, const char *name, PetscInt n,
+                          std::vector<double> &values)
+{
+  Vec v;
+  const PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(plainVec(comm, n, name, &v));
+  PetscCall(VecLoad(v, viewer));
+  PetscCall(VecGetArrayRead(v, &a));
+  values.assign(a, a + n);
+  PetscCall(VecRestoreArrayRead(v, &a));
+  PetscCall(VecDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readVec(PetscViewer viewer, const char *name, Vec x)
+{
+  PetscInt n;
+  std::vector<double> values;
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(readValues(viewer, PetscObjectComm((PetscObject)x), name, n, values));
+  PetscCall(VecGetArray(x, &a));
+  std::copy(values.begin(), values.end(), a);
+  PetscCall(VecRestoreArray(x, &a));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
+  PetscMPIInt rank, size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  const std::string dir = checkpointDir(run.scene.output_dir);
+  {
+    std::error_code failed;
+    if (rank == 0) std::filesystem::create_directories(dir, failed);
+    int ok = !failed;
+    PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+    PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "cannot create the checkpoint directory %s",
+               dir.c_str());
+  }
+  *path = dir + "/" + checkpointName(run.step);
+  const std::string partial = *path + ".partial";
+  double layout[3];
+  PetscCall(layoutOf(run, X, layout));
+  const std::vector<double> history = run.problem.interfaces().committedHistory();
+  const std::vector<double> times = run.fields.times();
+
+  PetscViewer viewer;
+  PetscCall(PetscViewerHDF5Open(comm, partial.c_str(), FILE_MODE_WRITE, &viewer));
+  PetscCall(writeValues(viewer, comm, "layout", layout, 3));
+  PetscCall(writeVec(viewer, "solution", X));
+  PetscCall(writeVec(viewer, "last_increment", run.last_increment));
+  PetscCall(
+      writeValues(viewer, comm, "interface_history", history.data(), (PetscInt)history.size()));
+  PetscCall(writeValues(viewer, comm, "output_times", times.data(),
+                        rank == 0 ? (PetscInt)times.size() : 0));
+  const PetscInt version = kVersion, ranks = size, step = run.step,
+                 output_count = (PetscInt)times.size();
+  double t, next_dt;
+  PetscCall(TSGetTime(run.ts, &t));
+  PetscCall(TSGetTimeStep(run.ts, &next_dt));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "version", PETSC_INT, &version));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "ranks", PETSC_INT, &ranks));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "step", PETSC_INT, &step));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "output_count", PETSC_INT, &output_count));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "time", PETSC_REAL, &t));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "next_dt", PETSC_REAL, &next_dt));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "last_dt", PETSC_REAL, &run.last_dt));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "first_contraction", PETSC_REAL,
+                                          &run.first_contraction));
+  PetscCall(
+      PetscViewerHDF5WriteAttribute(viewer, "/", "integrator", PETSC_STRING, run.time.name()));
+  PetscCall(PetscViewerDestroy(&viewer)); // collective: the file is complete on every rank
+  int ok = 1;
+  if (rank == 0) {
+    std::error_code failed;
+    std::filesystem::rename(partial, *path, failed);
+    ok = !failed;
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s", partial.c_str(),
+             path->c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode findCheckpoint(MPI_Comm comm, const std::string &dir, int step, std::string *path)
+{
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  const std::string where = checkpointDir(dir);
+  int found = -1;
+  if (rank == 0) {
+    std::error_code failed;
+    const std::regex pattern("step-([0-9]{6})\\.h5");
+    for (const auto &entry : std::filesystem::directory_iterator(where, failed)) {
+      std::smatch m;
+      const std::string name = entry.path().filename().string();
+      if (!std::regex_match(name, m, pattern)) continue;
+      const int k = std::stoi(m[1].str());
+      if (step < 0 ? k > found : k == step) found = k;
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, comm));
+  if (step < 0)
+    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT,
+               "-restart %s: no checkpoint in %s (a run writes them with -checkpoint_every N, "
+               "and when it stops early)",
+               dir.c_str(), where.c_str());
+  else
+    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT,
+               "-restart_step %d: %s has no checkpoint of step %d", step, where.c_str(), step);
+  *path = where + "/" + checkpointName(found);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, CheckpointInfo *info)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
+  PetscMPIInt rank, size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscViewer viewer;
+  PetscCall(PetscViewerHDF5Open(comm, path.c_str(), FILE_MODE_READ, &viewer));
+  PetscInt version = 0, ranks = 0, step = 0, output_count = 0;
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "version", PETSC_INT, nullptr, &version));
+  PetscCheck(version == kVersion, comm, PETSC_ERR_USER_INPUT,
+             "checkpoint %s: format version %d, this poroseam reads version %d", path.c_str(),
+             (int)version, (int)kVersion);
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "ranks", PETSC_INT, nullptr, &ranks));
+  PetscCheck(ranks == size, comm, PETSC_ERR_USER_INPUT,
+             "checkpoint %s was written by %d MPI ranks: restart it on %d (mpiexec -n %d); a "
+             "checkpoint holds each rank's part of the mesh as it was partitioned",
+             path.c_str(), (int)ranks, (int)size, (int)ranks);
+  char *integrator = nullptr;
+  PetscCall(
+      PetscViewerHDF5ReadAttribute(viewer, "/", "integrator", PETSC_STRING, nullptr, &integrator));
+  const std::string written_by = integrator;
+  PetscCall(PetscFree(integrator));
+  PetscCheck(written_by == run.time.name(), comm, PETSC_ERR_USER_INPUT,
+             "checkpoint %s was written with %s; this run integrates with %s (-ts_type)",
+             path.c_str(), written_by.c_str(), run.time.name());
+  {
+    double mine[3], theirs_local[3];
+    std::vector<double> theirs;
+    PetscCall(layoutOf(run, X, mine));
+    PetscCall(readValues(viewer, comm, "layout", 3, theirs));
+    std::copy(theirs.begin(), theirs.end(), theirs_local);
+    int same = mine[0] == theirs_local[0] && mine[1] == theirs_local[1] &&
+               std::abs(mine[2] - theirs_local[2]) <= 1e-12 * std::max(1.0, std::abs(mine[2]));
+    int all = 0;
+    PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, comm));
+    PetscCheck(all, comm, PETSC_ERR_USER_INPUT,
+               "checkpoint %s belongs to another mesh or partition (on this rank %.0f unknowns "
+               "and %.0f interface history values, the checkpoint has %.0f and %.0f): restart "
+               "with the scene, -mesh_size_factor and number of ranks of the run that wrote it",
+               path.c_str(), mine[0], mine[1], theirs_local[0], theirs_local[1]);
+  }
+  PetscCall(readVec(viewer, "solution", X));
+  PetscCall(readVec(viewer, "last_increment", run.last_increment));
+  {
+    std::vector<double> history;
+    PetscCall(readValues(viewer, comm, "interface_history",
+                         (PetscInt)run.problem.interfaces().committedHistory().size(), history));
+    PetscCall(run.problem.restoreHistory(history));
+  }
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, nullptr, &step));
+  PetscCall(
+      PetscViewerHDF5ReadAttribute(viewer, "/", "output_count", PETSC_INT, nullptr, &output_count));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, nullptr, &info->time));
+  PetscCall(
+      PetscViewerHDF5ReadAttribute(viewer, "/", "next_dt", PETSC_REAL, nullptr, &info->next_dt));
+  PetscCall(
+      PetscViewerHDF5ReadAttribute(viewer, "/", "last_dt", PETSC_REAL, nullptr, &run.last_dt));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "first_contraction", PETSC_REAL, nullptr,
+                                         &run.first_contraction));
+  {
+    std::vector<double> times;
+    PetscCall(readValues(viewer, comm, "output_times", rank == 0 ? output_count : 0, times));
+    times.resize(output_count);
+    PetscCallMPI(MPI_Bcast(times.data(), (int)output_count, MPI_DOUBLE, 0, comm));
+    info->output_times = times;
+  }
+  PetscCall(PetscViewerDestroy(&viewer));
+  info->step = (int)step;
+  // The last accepted local state, with the prescribed values of its time.
+  PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, run.previous));
+  PetscCall(run.problem.insertBoundaryValues(info->time, run.previous));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *restart)
+{
+  char dir[PETSC_MAX_PATH_LEN] = "";
+  PetscBool set = PETSC_FALSE, step_set = PETSC_FALSE;
+  PetscInt every = 0, step = -1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-checkpoint_every", &every, nullptr));
+  PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-checkpoint_every %d: expected a number of steps >= 0 (0: checkpoints only when a "
+             "run stops early)",
+             (int)every);
+  run.checkpoint_every = (int)every;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-restart", dir, sizeof(dir), &set));
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-restart_step", &step, &step_set));
+  PetscCheck(!step_set || set, comm, PETSC_ERR_USER_INPUT,
+             "-restart_step %d needs -restart <output directory of the run to continue>",
+             (int)step);
+  PetscCheck(!step_set || step >= 1, comm, PETSC_ERR_USER_INPUT,
+             "-restart_step %d: expected the step number of a checkpoint (>= 1)", (int)step);
+  if (!set) PetscFunctionReturn(0);
+  PetscCheck(dir[0], comm, PETSC_ERR_USER_INPUT,
+             "-restart: expected the output directory of the run to continue");
+  std::error_code failed;
+  PetscCheck(std::filesystem::is_directory(dir, failed), comm, PETSC_ERR_USER_INPUT,
+             "-restart %s: no such directory (expected the output directory of the run to "
+             "continue)",
+             dir);
+  restart->restart = true;
+  restart->dir = dir;
+  restart->step = step_set ? (int)step : -1;
+  PetscFunctionReturn(0);
+}
+
+/// A new run (not a restart) first removes what an earlier run left in its output directory
+/// and this one might not overwrite: field and interface files (when this run writes none),
+/// the time series, and checkpoints (which a later -restart would otherwise mistake for its
+/// own). Only these names are touched.
+PetscErrorCode clearEarlierRun(MPI_Comm comm, const std::string &dir)
+{
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    namespace fs = std::filesystem;
+    std::error_code ignored;
+    for (const char *name :
+         {"fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf", "timeseries.csv"})
+      fs::remove(fs::path(dir) / name, ignored);
+    const fs::path checkpoints = fs::path(dir) / "checkpoints";
+    if (fs::is_directory(checkpoints, ignored)) {
+      std::vector<fs::path> old;
+      for (const auto &entry : fs::directory_iterator(checkpoints, ignored)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("step-", 0) == 0) old.push_back(entry.path());
+      }
+      for (const auto &path : old)
+        fs::remove(path, ignored);
+      fs::remove(checkpoints, ignored); // only if now empty
+    }
+  }
+  PetscCallMPI(MPI_Barrier(comm));
+  PetscFunctionReturn(0);
+}
+
+} // namespace simulation_detail
+} // namespace poroseam

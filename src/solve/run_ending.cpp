@@ -1,0 +1,76 @@
+// How a run ended (split from simulation.cpp): it succeeded only if it reached its final time;
+// any other end is an error that says where it stopped, why, and how to go on, and leaves a
+// checkpoint of its last accepted step (docs/checkpoints.md).
+
+#include "run.hpp"
+
+#include "checkpoint.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+namespace poroseam {
+namespace simulation_detail {
+
+PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *message)
+{
+  PetscFunctionBeginUser;
+  TSConvergedReason reason;
+  double t, t_end;
+  PetscInt max_steps, rejects = 8;
+  PetscCall(TSGetConvergedReason(run.ts, &reason));
+  PetscCall(TSGetTime(run.ts, &t));
+  PetscCall(TSGetMaxTime(run.ts, &t_end));
+  PetscCall(TSGetMaxSteps(run.ts, &max_steps));
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ts_max_reject", &rejects, nullptr));
+  const bool reached =
+      reason >= 0 && t >= t_end - 1e-10 * std::max(std::abs(t_end), run.nominal_dt);
+  std::string checkpoint_note;
+  if (!reached && checkpoints && run.step > 0) {
+    // Nothing is lost: the last accepted step becomes a checkpoint (unless it is one).
+    if (run.checkpoint_step != run.step) {
+      std::string path;
+      PetscCall(writeCheckpoint(run, X, &path));
+      run.checkpoint_step = run.step;
+    }
+    checkpoint_note = "; a checkpoint of step " + std::to_string(run.step) + " is in " +
+                      run.scene.output_dir + "/checkpoints";
+  }
+  const std::string restart_hint =
+      checkpoint_note.empty() ? std::string() : "; continue with -restart " + run.scene.output_dir;
+  const std::string steps_hint =
+      (checkpoint_note.empty() ? "; rerun with" : " and") + std::string(" a larger -ts_max_steps");
+  char text[2048] = "";
+  if (reason < 0) {
+    std::snprintf(text, sizeof(text),
+                  "step %d failed (%s): %s from t = %g s even after %d cuts of the time step "
+                  "(last tried dt = %g s). Results up to t = %g s are in %s%s; a smaller -ts_dt, "
+                  "more cuts (-ts_max_reject) or other solver options may help",
+                  run.step + 1, TSConvergedReasons[reason],
+                  run.time.adaptive() ? "its attempts were rejected (Newton did not converge or "
+                                        "the error exceeded -ts_rtol)"
+                                      : "Newton did not converge",
+                  t, (int)rejects, run.attempted_dt, t, run.scene.output_dir.c_str(),
+                  checkpoint_note.c_str());
+  } else if (run.stop_signal) {
+    std::snprintf(text, sizeof(text),
+                  "stopped at step %d, t = %g s of %g s, on signal %d (%s). Results up to t = %g "
+                  "s are in %s%s%s",
+                  run.step, t, t_end, run.stop_signal, strsignal(run.stop_signal), t,
+                  run.scene.output_dir.c_str(), checkpoint_note.c_str(), restart_hint.c_str());
+  } else if (!reached) {
+    std::snprintf(text, sizeof(text),
+                  "stopped at step %d, t = %g s, before the final time %g s (-ts_max_time): the "
+                  "step limit -ts_max_steps %d was reached. Results up to t = %g s are in %s%s%s",
+                  run.step, t, t_end, (int)max_steps, t, run.scene.output_dir.c_str(),
+                  checkpoint_note.c_str(), (restart_hint + steps_hint).c_str());
+  }
+  *message = text;
+  PetscFunctionReturn(0);
+}
+
+} // namespace simulation_detail
+} // namespace poroseam
