@@ -7,6 +7,7 @@ pressure, fields every 2 steps.
     restart.py --case kill    [--ranks 2] [--seed S]
     restart.py --case signal  [--ranks 2]
     restart.py --case ranks
+    restart.py --case stale   [--ranks 2]
 
 kill    the run with -checkpoint_every 2 is killed with SIGKILL (mpiexec and every rank) after
         a random number of steps (5 to 40, from --seed or the clock; printed), possibly while a
@@ -15,6 +16,9 @@ kill    the run with -checkpoint_every 2 is killed with SIGKILL (mpiexec and eve
 signal  the run without -checkpoint_every gets SIGTERM (sent to its ranks, as a batch system
         does) after a random number of steps: it must exit non-zero with "stopped at step N, t = ..."
         and "-restart <dir>", and leave a checkpoint of exactly that step; then the restart.
+stale   a new run in the output directory of an earlier one removes the earlier checkpoints,
+        field and interface files it does not write itself (nothing of another run is
+        mistaken for its own, nor offered to a later -restart).
 ranks   a 2-rank checkpoint restarted on 1 rank is refused with a one-line message naming
         the checkpoint and the number of ranks (a checkpoint holds each rank's part of the
         partitioned mesh).
@@ -225,13 +229,27 @@ def compare(reference, other, chk):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--case", choices=["kill", "signal", "ranks"], required=True)
+    ap.add_argument("--case", choices=["kill", "signal", "ranks", "stale"], required=True)
     ap.add_argument("--ranks", type=int, default=2)
     ap.add_argument("--seed", type=int, default=None)
     args = ap.parse_args()
     seed = args.seed if args.seed is not None else int(time.time())
     after = random.Random(seed).randint(5, 40)
     chk = common.Checks(f"restart, {args.case} ({args.ranks} ranks, seed {seed}: after step {after})")
+
+    if args.case == "stale":
+        out = common.output_dir("restart_stale")
+        status, _ = restart(out, ["-ts_max_time", 12, "-checkpoint_every", 2], args.ranks)
+        expect(chk, status == 0 and os.path.isfile(os.path.join(out, "checkpoints", "step-000004.h5"))
+               and os.path.isfile(os.path.join(out, "fields.h5")), "a first run with checkpoints and fields")
+        status, _ = restart(out, ["-ts_max_time", 6, "-output_fields_every", 0], args.ranks)
+        left = [f for f in ("checkpoints", "fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf")
+                if os.path.exists(os.path.join(out, f))]
+        expect(chk, status == 0 and not left,
+               f"a second run in the same directory without them leaves none of the first's: {left}")
+        expect(chk, rows(out) == 2, f"its time series has its own 2 steps ({rows(out)})")
+        chk.finish()
+        return
 
     if args.case == "ranks":
         out = common.output_dir("restart_ranks")
