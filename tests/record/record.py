@@ -7,7 +7,9 @@
   written from run.yaml, another -output_dir): its time series must equal the first run's in
   every column but wall_time, as printed (to the last digit written: the same computation).
 --case step_limit: the same scene with -ts_max_steps 2 before its final time: the run exits
-  non-zero and run.yaml says ending 'step limit', exit status 1, 2 steps.
+  non-zero and run.yaml says ending 'step limit', exit status 1, 2 steps; restarted from its
+  checkpoint, the record has a second segment (success, steps 2 to 5); a run with a region
+  the mesh lacks records ending 'error' with the error line.
 """
 
 import argparse
@@ -19,7 +21,8 @@ import sys
 
 import yaml
 
-SOURCE = os.environ.get("POROSEAM_SOURCE", os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SOURCE = os.environ.get(
+    "POROSEAM_SOURCE", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 EXE = os.environ.get("POROSEAM_EXE", os.path.join(SOURCE, "build", "poroseam"))
 OUTPUT_ROOT = os.environ.get("POROSEAM_TEST_OUTPUT", "/tmp/poroseam-test-output")
 SCENE = "tests/verification/terzaghi_2d.opts"
@@ -129,6 +132,23 @@ def case_step_limit():
     check(seg["summary"]["steps"] == 2, f"steps {seg['summary']['steps']}")
     lines = (res.stdout + res.stderr).strip().splitlines()
     check(any(l.startswith("summary:") for l in lines), "the summary is printed")
+
+    # Restarted from its checkpoint, the run appends its segment to the record.
+    res = run(["-options_file", SCENE, "-ts_max_time", "1", "-restart", out], out)
+    check(res.returncode == 0, f"the restart succeeds (exit {res.returncode})")
+    with open(os.path.join(out, "run.yaml")) as f:
+        segs = yaml.safe_load(f)["segments"]
+    check([s["ending"] for s in segs] == ["step limit", "success"] and segs[1]["restart"],
+          f"two segments: {[s['ending'] for s in segs]}")
+    check((segs[1]["summary"]["first_step"], segs[1]["summary"]["last_step"]) == (2, 5),
+          "the restart's segment goes from step 2 to 5")
+
+    # An error after the start (bad input found once the mesh is read) is recorded too.
+    bad = fresh("error")
+    res = run(["-options_file", SCENE, "-regions", "soil,nowhere"], bad)
+    seg, _ = segment(bad)
+    check(res.returncode != 0 and seg["ending"] == "error" and seg["exit_status"] == 1
+          and "nowhere" in seg["message"], f"bad input: ending {seg['ending']}, {seg['message']!r}")
 
 
 def main():
