@@ -6,8 +6,9 @@ import re
 import statistics
 
 FIELD = re.compile(r"^field\s+(\S+)\s+(\d+)\s+unknowns")
+# The step line: ... krylov K [(cut back)]  WALL s  eta ETA [checkpoint]
 STEP = re.compile(r"^step\s+(\d+)\s+t\s+\S+\s+s\s+dt\s+\S+\s+load\s+\S+\s+newton\s+(\d+)\s+"
-                  r"krylov\s+(\d+)(\s+\(cut back\))?\s+([0-9.eE+-]+)\s+s\s*$")
+                  r"krylov\s+(\d+)(\s+\(cut back\))?\s+([0-9.eE+-]+)\s+s(\s+eta\s.*)?$")
 MEMORY = re.compile(r"^Maximum \(over computational time\) process memory:\s+total\s+(\S+)\s+"
                     r"max\s+(\S+)\s+min\s+(\S+)")
 

@@ -9,12 +9,13 @@
 #include "poroseam/log_events.hpp"
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
+#include "poroseam/run_record.hpp"
 #include "poroseam/scene.hpp"
 #include "poroseam/time_integration.hpp"
+#include "poroseam/time_series.hpp"
 
 #include "stop_request.hpp"
 
-#include <cstdio>
 #include <petscts.h>
 #include <string>
 #include <vector>
@@ -45,13 +46,17 @@ struct Run {
   std::vector<BoundaryDofs> boundary_dofs;
   /// Per interface: its prescribed interface-pressure dofs, where water leaves along it.
   std::vector<std::vector<PetscInt>> interface_end_dofs;
-  FILE *csv = nullptr;
+  TimeSeries series; ///< timeseries.csv
   double nominal_dt = 0.0;
   double fail_dt_above = 0.0; ///< test hook: step attempts with a larger dt fail
   double attempted_dt = 0.0;  ///< dt of the last residual evaluation
   PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
   double step_start = 0.0;
   int step = 0;
+  /// Progress (step line, run summary): where and when the time loop started, its final time,
+  /// and the accepted steps that needed a cut-back.
+  double loop_start_wall = 0.0, loop_start_time = 0.0, t_end = 0.0;
+  int steps_cut_back = 0;
   double zero_state_scale = 0.0; ///< gross residual of the zero state (weight, initial stress)
   double stage_time = 0.0;       ///< time of the step being solved
   double reference_rtol = 1e-9;  ///< -snes_reference_rtol
@@ -114,8 +119,10 @@ PetscErrorCode configureLineSearch(Run &run, SNES snes);
 // run_ending.cpp: how the run ended.
 
 /// After TSSolve: the error message of a run that did not reach its final time (empty when it
-/// did), writing a checkpoint of its last accepted step if `checkpoints` and none exists.
-PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *message);
+/// did), writing a checkpoint of its last accepted step if `checkpoints` and none exists, and
+/// which of the ways to end it was.
+PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *message,
+                              RunEnding *ending);
 
 } // namespace simulation_detail
 } // namespace poroseam

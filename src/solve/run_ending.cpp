@@ -15,7 +15,8 @@
 namespace poroseam {
 namespace simulation_detail {
 
-PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *message)
+PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *message,
+                              RunEnding *ending)
 {
   PetscFunctionBeginUser;
   TSConvergedReason reason;
@@ -44,7 +45,9 @@ PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *me
   const std::string steps_hint =
       (checkpoint_note.empty() ? "; rerun with" : " and") + std::string(" a larger -ts_max_steps");
   char text[2048] = "";
+  *ending = reached ? RunEnding::success : RunEnding::step_limit;
   if (reason < 0) {
+    *ending = RunEnding::failed_step;
     std::snprintf(text, sizeof(text),
                   "step %d failed (%s): %s from t = %g s even after %d cuts of the time step "
                   "(last tried dt = %g s). Results up to t = %g s are in %s%s; a smaller -ts_dt, "
@@ -56,6 +59,7 @@ PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *me
                   t, (int)rejects, run.attempted_dt, t, run.scene.output_dir.c_str(),
                   checkpoint_note.c_str());
   } else if (run.stop_signal) {
+    *ending = RunEnding::signal;
     std::snprintf(text, sizeof(text),
                   "stopped at step %d, t = %g s of %g s, on signal %d (%s). Results up to t = %g "
                   "s are in %s%s%s",

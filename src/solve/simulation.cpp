@@ -19,15 +19,15 @@
 #include "poroseam/time_integration.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <petscts.h>
-#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace poroseam {
@@ -100,95 +100,6 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   PetscFunctionReturn(0);
 }
 
-/// The header line of timeseries.csv for this scene.
-std::string timeSeriesHeader(const Run &run)
-{
-  std::ostringstream h;
-  const char *axis[3] = {"x", "y", "z"};
-  h << "step,time,dt,load,newton_its,ksp_its,rejected,wall_time";
-  for (const auto &b : run.scene.boundaries) {
-    for (int d = 0; d < run.scene.dim; ++d)
-      h << "," << b.name << ".F" << axis[d];
-    if (run.scene.hasPressure()) h << "," << b.name << ".flux";
-    if (run.scene.hasInterfacePressure()) h << "," << b.name << ".interface_outflow";
-  }
-  // Interface blocks as interfaceResultants writes them, then the interface outflows.
-  auto block = [&](const Interface &i, const std::string &name) {
-    for (int d = 0; d < run.scene.dim; ++d)
-      h << "," << name << ".F" << axis[d];
-    if (i.flow)
-      for (const char *q : {"flux1", "flux2", "storage", "storage_rate", "p3_force"})
-        h << "," << name << "." << q;
-  };
-  for (const auto &i : run.scene.interfaces) {
-    block(i, i.name);
-    if (i.surfaces.size() > 1)
-      for (const auto &s : i.surfaces)
-        block(i, i.name + "." + s);
-  }
-  for (const auto &i : run.scene.interfaces)
-    if (i.flow) h << "," << i.name << ".outflow";
-  for (const auto &p : run.scene.probes) {
-    for (int d = 0; d < run.scene.dim; ++d)
-      h << "," << p.name << ".u" << axis[d];
-    h << "," << p.name << ".p";
-  }
-  return h.str();
-}
-
-/// Opens timeseries.csv (rank 0) for a new run (resume_step < 0), or, restarting from the
-/// checkpoint of step resume_step, keeps the interrupted run's rows of steps 0..resume_step
-/// (its later rows are dropped: the restarted run writes them again) and appends.
-PetscErrorCode openTimeSeries(Run &run, int resume_step)
-{
-  PetscMPIInt rank;
-  MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  const std::string path = run.scene.output_dir + "/timeseries.csv";
-  const std::string header = timeSeriesHeader(run);
-  // 0: fine, 1: cannot write, 2: missing or other columns, 3: rows missing (restart)
-  int status = 0;
-  if (rank == 0 && resume_step >= 0) {
-    std::ifstream in(path);
-    std::string line, kept;
-    int rows = 0;
-    if (!std::getline(in, line) || line != header) status = 2;
-    kept = line + "\n";
-    while (status == 0 && std::getline(in, line)) {
-      const int step = std::atoi(line.c_str());
-      if (step > resume_step) break;
-      kept += line + "\n", ++rows;
-    }
-    if (status == 0 && rows != resume_step + 1) status = 3;
-    if (status == 0) {
-      std::ofstream out(path + ".tmp", std::ios::trunc);
-      out << kept;
-      out.close();
-      std::error_code failed;
-      if (out) std::filesystem::rename(path + ".tmp", path, failed);
-      if (!out || failed) status = 1;
-    }
-  }
-  if (rank == 0 && status == 0) {
-    run.csv = std::fopen(path.c_str(), resume_step >= 0 ? "a" : "w");
-    if (!run.csv)
-      status = 1;
-    else if (resume_step < 0)
-      std::fprintf(run.csv, "%s\n", header.c_str());
-  }
-  PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
-  PetscCheck(status != 1, comm, PETSC_ERR_FILE_OPEN, "cannot write %s (option -output_dir)",
-             path.c_str());
-  PetscCheck(status != 2, comm, PETSC_ERR_USER_INPUT,
-             "-restart: %s is missing or has other columns than this scene writes: restart "
-             "with the scene of the interrupted run",
-             path.c_str());
-  PetscCheck(status != 3, comm, PETSC_ERR_USER_INPUT,
-             "-restart: %s lacks rows up to step %d of the checkpoint", path.c_str(), resume_step);
-  PetscFunctionReturn(0);
-}
-
 /// One row of timeseries.csv and, every output_every steps, the fields.
 PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
                           PetscInt ksp, PetscInt rejected, double wall)
@@ -199,27 +110,10 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
   PetscCall(boundaryResultants(run, t, dt, local, rate, resultants));
   PetscCall(interfaceResultants(run, local, InterfaceRates{rate, dt}, interface));
   PetscCall(run.probes.evaluate(local, probes));
-  if (run.csv) {
-    const int dim = run.scene.dim;
-    std::fprintf(run.csv, "%d,%.10e,%.10e,%.6g,%d,%d,%d,%.4e", run.step, t, dt,
-                 run.problem.loadFactor(t), (int)newton, (int)ksp, (int)rejected, wall);
-    const int per = dim + 1 + (run.scene.hasInterfacePressure() ? 1 : 0);
-    for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
-      for (int d = 0; d < dim; ++d)
-        std::fprintf(run.csv, ",%.10e", resultants[b * per + d]);
-      if (run.scene.hasPressure()) std::fprintf(run.csv, ",%.10e", resultants[b * per + dim]);
-      if (run.scene.hasInterfacePressure())
-        std::fprintf(run.csv, ",%.10e", resultants[b * per + dim + 1]);
-    }
-    for (double v : interface)
-      std::fprintf(run.csv, ",%.10e", v);
-    for (size_t i = 0, k = run.scene.boundaries.size() * per; i < run.scene.interfaces.size(); ++i)
-      if (run.scene.interfaces[i].flow) std::fprintf(run.csv, ",%.10e", resultants[k + i]);
-    for (double v : probes)
-      std::fprintf(run.csv, ",%.12e", v);
-    std::fprintf(run.csv, "\n");
-    std::fflush(run.csv);
-  }
+  run.series.write(run.scene,
+                   StepRow{run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)ksp,
+                           (int)rejected, wall},
+                   resultants, interface, probes);
   if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0) {
     PetscCall(run.fields.write(t, local, run.initial));
     PetscCall(
@@ -243,6 +137,24 @@ PetscErrorCode resetDirectSolver(TS ts)
   PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &direct, PCLU, PCCHOLESKY, ""));
   if (direct) PetscCall(PCReset(pc));
   PetscFunctionReturn(0);
+}
+
+/// The wall time still needed to reach the final time, from the mean wall time per unit of
+/// simulated time so far (steps vary in cost; the mean over the run evens that out).
+std::string timeToFinish(const Run &run, double t)
+{
+  const double simulated = t - run.loop_start_time;
+  if (simulated <= 0.0) return "?";
+  const double left =
+      std::max(0.0, run.t_end - t) * (MPI_Wtime() - run.loop_start_wall) / simulated;
+  char text[32];
+  if (left < 120.0)
+    std::snprintf(text, sizeof(text), "%.0f s", left);
+  else if (left < 7200.0)
+    std::snprintf(text, sizeof(text), "%.0f min", left / 60.0);
+  else
+    std::snprintf(text, sizeof(text), "%.1f h", left / 3600.0);
+  return text;
 }
 
 PetscErrorCode postStep(TS ts)
@@ -303,11 +215,14 @@ PetscErrorCode postStep(TS ts)
   }
   const bool checkpoint =
       (run.checkpoint_every > 0 && run.step % run.checkpoint_every == 0) || run.stop_signal;
+  if (rejected) ++run.steps_cut_back;
+  const std::string eta = timeToFinish(run, t);
   PetscCall(PetscPrintf(PetscObjectComm((PetscObject)ts),
-                        "step %4d  t %11.5e s  dt %10.4e  load %6.4f  newton %2d  krylov %4d%s  "
-                        "%.2f s%s\n",
-                        run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)krylov,
-                        rejected ? "  (cut back)" : "", wall, checkpoint ? "  checkpoint" : ""));
+                        "step %4d  t %11.5e/%.5e s  dt %10.4e  load %6.4f  newton %2d  krylov %4d%s"
+                        "  %.2f s  eta %s%s\n",
+                        run.step, t, run.t_end, dt, run.problem.loadFactor(t), (int)newton,
+                        (int)krylov, rejected ? "  (cut back)" : "", wall, eta.c_str(),
+                        checkpoint ? "  checkpoint" : ""));
   PetscCall(run.problem.commit(local)); // only accepted steps reach here
   PetscCall(run.time.accept(t, run.previous, X));
   // Newton's extrapolated start of the next step: this step's increment of the unknowns.
@@ -337,7 +252,7 @@ PetscErrorCode postStep(TS ts)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode printFieldSizes(Run &run, long *unknowns)
+PetscErrorCode printFieldSizes(Run &run, std::vector<std::pair<std::string, long>> *fields)
 {
   PetscSection gs;
   PetscInt pStart, pEnd, numFields;
@@ -363,10 +278,8 @@ PetscErrorCode printFieldSizes(Run &run, long *unknowns)
     const char *name;
     PetscCall(PetscSectionGetFieldName(s, f, &name));
     PetscCall(PetscPrintf(comm, "field %-14s %10ld unknowns\n", name, total[f]));
+    fields->emplace_back(name, total[f]);
   }
-  *unknowns = 0;
-  for (long n : total)
-    *unknowns += n;
   PetscFunctionReturn(0);
 }
 
@@ -383,13 +296,9 @@ PetscErrorCode reportUnusedOptions(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-} // namespace simulation_detail
-
-using namespace simulation_detail;
-
-PetscErrorCode runSimulation(MPI_Comm comm)
+/// The run: set-up, time loop, ending; run.yaml through `record`.
+PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
 {
-  Run run;
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -410,6 +319,7 @@ PetscErrorCode runSimulation(MPI_Comm comm)
                run.scene.output_dir.c_str(), why.c_str());
   }
   if (!restart.restart) PetscCall(clearEarlierRun(comm, run.scene.output_dir));
+  PetscCall(record.begin(comm, run.scene.output_dir, restart.restart));
   std::vector<PhysicalName> names;
   int dim;
   PetscCall(beginLogPhase(run.events.mesh));
@@ -428,8 +338,12 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(run.problem.setup(run.dm, run.scene));
   PetscCall(run.probes.setup(run.dm, run.scene));
   PetscCall(collectBoundaryDofs(run));
+  std::vector<std::pair<std::string, long>> fields;
+  PetscCall(printFieldSizes(run, &fields));
+  PetscCall(record.setUnknowns(comm, fields));
   long unknowns = 0;
-  PetscCall(printFieldSizes(run, &unknowns));
+  for (const auto &f : fields)
+    unknowns += f.second;
   PetscCall(applySolverPreset(comm, run.scene.dim, unknowns));
   PetscCall(
       PetscOptionsGetReal(nullptr, nullptr, "-test_fail_dt_above", &run.fail_dt_above, nullptr));
@@ -549,7 +463,8 @@ PetscErrorCode runSimulation(MPI_Comm comm)
     PetscCall(DMRestoreLocalVector(run.dm, &zero));
   }
   PetscCall(beginLogEvent(run.events.output));
-  PetscCall(openTimeSeries(run, restart.restart ? resumed.step : -1));
+  PetscCall(
+      run.series.open(comm, run.scene, run.scene.output_dir, restart.restart ? resumed.step : -1));
   if (run.scene.output_every > 0) {
     const std::vector<double> *times = restart.restart ? &resumed.output_times : nullptr;
     PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields", times));
@@ -565,7 +480,10 @@ PetscErrorCode runSimulation(MPI_Comm comm)
     PetscCall(DMRestoreLocalVector(run.dm, &rate));
   }
   run.step_start = MPI_Wtime();
-  const double t0 = MPI_Wtime();
+  run.loop_start_wall = run.step_start;
+  PetscCall(TSGetTime(run.ts, &run.loop_start_time));
+  PetscCall(TSGetMaxTime(run.ts, &run.t_end));
+  const int first_step = run.step;
   PetscCall(TSSetErrorIfStepFails(run.ts, PETSC_FALSE));
   PetscCall(endLogPhase(run.events.layout));
   PetscCall(beginLogPhase(run.events.time_stepping));
@@ -574,13 +492,26 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(endLogPhase(run.events.time_stepping));
   PetscCall(run.stop.restore());
   std::string message; // empty: the run reached its final time
-  PetscCall(describeEnding(run, X, checkpoints, &message));
+  RunEnding ending;
+  PetscCall(describeEnding(run, X, checkpoints, &message, &ending));
+  {
+    RunSummary summary;
+    PetscInt newton, krylov, rejected;
+    PetscCall(TSGetSNESIterations(run.ts, &newton));
+    PetscCall(TSGetKSPIterations(run.ts, &krylov));
+    PetscCall(TSGetStepRejections(run.ts, &rejected));
+    PetscCall(TSGetTime(run.ts, &summary.time));
+    summary.steps = run.step - first_step, summary.first_step = first_step;
+    summary.last_step = run.step, summary.steps_cut_back = run.steps_cut_back;
+    summary.newton = newton, summary.krylov = krylov, summary.rejected = rejected;
+    summary.stepping_wall = MPI_Wtime() - run.loop_start_wall;
+    PetscCall(record.finish(comm, ending, message, summary));
+  }
   if (message.empty())
     PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
-                          MPI_Wtime() - t0, run.scene.output_dir.c_str()));
+                          MPI_Wtime() - run.loop_start_wall, run.scene.output_dir.c_str()));
   PetscCall(beginLogEvent(run.events.output));
-  if (run.csv) std::fclose(run.csv);
-  run.csv = nullptr;
+  run.series.close();
   PetscCall(run.fields.close());
   PetscCall(run.interface_fields.close());
   PetscCall(endLogEvent(run.events.output));
@@ -594,6 +525,22 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   PetscCall(DMDestroy(&run.dm));
   PetscCall(reportUnusedOptions(comm));
   PetscCheck(message.empty(), comm, PETSC_ERR_NOT_CONVERGED, "%s", message.c_str());
+  PetscFunctionReturn(0);
+}
+
+} // namespace simulation_detail
+
+PetscErrorCode runSimulation(MPI_Comm comm)
+{
+  using namespace simulation_detail;
+  Run run;
+  RunRecord record;
+  PetscFunctionBeginUser;
+  const PetscErrorCode error = simulate(comm, run, record);
+  // An error anywhere after the record's start still ends it (failed steps, step limits and
+  // signals have ended it already, with their summary).
+  if (error) record.abandon(error);
+  PetscCall(error);
   PetscFunctionReturn(0);
 }
 

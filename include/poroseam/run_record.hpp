@@ -1,0 +1,73 @@
+// run.yaml: the record of a run in its output directory (docs/scenes.md, "Run record").
+#pragma once
+
+#include <petscsys.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace poroseam {
+
+/// How a run ended: describeEnding's outcomes, an error before or outside the time loop, or
+/// not yet (the record written at the start, or left by a killed run).
+enum class RunEnding { running, success, failed_step, step_limit, signal, error };
+const char *runEndingName(RunEnding ending);
+
+/// Totals of one run (or one segment of a restarted run).
+struct RunSummary {
+  int steps = 0;          ///< steps taken by this run
+  int first_step = 0;     ///< the step it started from (0, or the checkpoint's)
+  int last_step = 0;      ///< the last accepted step
+  double time = 0.0;      ///< simulated time reached [s]
+  int steps_cut_back = 0; ///< accepted steps that needed at least one cut-back
+  long rejected = 0;      ///< attempts rejected (cut back), the last failed step's included
+  long newton = 0, krylov = 0;
+  double wall = 0.0;                  ///< from the record's start to the end [s]
+  double stepping_wall = 0.0;         ///< of that, the time loop [s]
+  std::vector<double> peak_memory_mb; ///< per rank: the high-water mark of its resident memory
+};
+
+/// The record of a run, written by rank 0 as YAML under a temporary name and renamed, so a
+/// reader never sees half a file: at the start (ending: running), when the unknowns are known,
+/// and at the end, also when the run ends in an error. A restarted run appends its segment to
+/// the interrupted run's record.
+class RunRecord {
+public:
+  /// Notes the start time, the options as PETSc holds them (scene file and command line), the
+  /// versions and the ranks, and writes the record. Collective.
+  PetscErrorCode begin(MPI_Comm comm, const std::string &output_dir, bool restart);
+  /// Unknowns per field (the 'field ... unknowns' lines), written at once. Collective.
+  PetscErrorCode setUnknowns(MPI_Comm comm, const std::vector<std::pair<std::string, long>> &f);
+  /// The end of a run that reached its time loop's end: gathers the peak memory of every rank
+  /// (collective), prints the summary and writes the final record.
+  PetscErrorCode finish(MPI_Comm comm, RunEnding ending, const std::string &message,
+                        RunSummary summary);
+  /// The end of a run stopped by an error (on any one rank): rank 0 writes what it knows, without
+  /// communication, since the other ranks may not be there. No-op if begin() did not run or
+  /// finish() did.
+  void abandon(PetscErrorCode error);
+  /// Wall time since begin() [s].
+  double elapsed() const;
+
+private:
+  std::string text() const;
+  bool write() const; ///< rank 0: the whole file, atomically; false if it could not
+
+  int rank_ = 0, size_ = 1;
+  bool begun_ = false, finished_ = false;
+  std::string path_, output_dir_;
+  std::string earlier_; ///< the interrupted run's record (segments before this one)
+  bool restart_ = false;
+  double start_wall_ = 0.0;
+  std::string start_, end_;
+  std::string command_line_, scene_files_;
+  std::vector<std::pair<std::string, std::string>> options_; ///< name, value ("\x01": none)
+  std::vector<std::pair<std::string, long>> unknowns_;
+  RunEnding ending_ = RunEnding::running;
+  int exit_status_ = 0;
+  std::string message_;
+  RunSummary summary_;
+  bool has_summary_ = false;
+};
+
+} // namespace poroseam
