@@ -1,5 +1,7 @@
 #include "poroseam/scene.hpp"
 
+#include "poroseam/option_check.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -416,37 +418,6 @@ std::set<std::string> optionsWithPrefix(const std::string &all, const std::strin
   return found;
 }
 
-PetscErrorCode checkOptionNames(MPI_Comm comm, const Scene &scene)
-{
-  char *all = nullptr;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetAll(nullptr, &all));
-  const std::string text = all;
-  PetscCall(PetscFree(all));
-  for (const auto &opt : optionsWithPrefix(text, "region_")) {
-    bool known = false;
-    for (const auto &r : scene.regions)
-      known = known || opt.rfind("region_" + r.name + "_", 0) == 0;
-    PetscCheck(known, comm, PETSC_ERR_USER_INPUT,
-               "option -%s names a region that is not in -regions", opt.c_str());
-  }
-  for (const auto &opt : optionsWithPrefix(text, "interface_")) {
-    bool known = false;
-    for (const auto &i : scene.interfaces)
-      known = known || opt.rfind("interface_" + i.name + "_", 0) == 0;
-    PetscCheck(known, comm, PETSC_ERR_USER_INPUT,
-               "option -%s names an interface that is not in -interfaces", opt.c_str());
-  }
-  for (const auto &opt : optionsWithPrefix(text, "bc_")) {
-    bool known = false;
-    for (const auto &b : scene.boundaries)
-      known = known || opt.rfind("bc_" + b.name + "_", 0) == 0;
-    PetscCheck(known, comm, PETSC_ERR_USER_INPUT,
-               "option -%s names a boundary that is not in -boundaries", opt.c_str());
-  }
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode readProbes(MPI_Comm comm, Scene &scene)
 {
   char *all = nullptr;
@@ -495,6 +466,8 @@ PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
 {
   bool set = false;
   PetscFunctionBeginUser;
+  // The scene-wide names first: "missing option -mesh" would hide that -mseh was given.
+  PetscCall(checkOptionNames(comm, SceneNames{}));
   PetscCall(getString("-mesh", scene.mesh_file, &set));
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
              "missing option -mesh: name a Gmsh mesh (.msh) or geometry (.geo) file");
@@ -511,6 +484,35 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   bool set = false;
   PetscFunctionBeginUser;
   scene.dim = dim;
+  // The lists first: with the names of the scene's parts known, a misspelt option is named
+  // before it shows as a missing one ("missing option -region_soil_E" when -region_soil_e
+  // was given) or as a wrong default.
+  std::vector<std::string> regions, interfaces, boundaries;
+  PetscCall(getStringList("-regions", regions, &set));
+  PetscCheck(set && !regions.empty(), comm, PETSC_ERR_USER_INPUT,
+             "missing option -regions: list the mesh regions (cell physical names: %s)",
+             joinNames(names, dim).c_str());
+  PetscCall(checkListNames(comm, "-regions", regions));
+  scene.regions.clear();
+  for (const auto &name : regions) {
+    Region r;
+    r.name = name;
+    PetscCall(findPhysical(comm, names, dim, name, "-regions", "region", &r.tag));
+    scene.regions.push_back(r);
+  }
+  PetscCall(getStringList("-interfaces", interfaces, &set));
+  PetscCall(checkListNames(comm, "-interfaces", interfaces));
+  PetscCall(getStringList("-boundaries", boundaries, &set));
+  PetscCall(checkListNames(comm, "-boundaries", boundaries));
+  scene.boundaries.clear();
+  for (const auto &name : boundaries) {
+    Boundary b;
+    b.name = name;
+    PetscCall(findPhysical(comm, names, dim - 1, name, "-boundaries", "boundary", &b.tag));
+    scene.boundaries.push_back(b);
+  }
+  PetscCall(checkOptionNames(comm, SceneNames{dim, regions, boundaries, interfaces, names}));
+
   PetscBool flag = PETSC_FALSE;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-drained", &flag, nullptr));
   scene.drained = flag;
@@ -570,27 +572,12 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
                scene.water_level, scene.surface_elevation);
   }
 
-  // Regions: every one must be a cell group of the mesh and have a material.
-  std::vector<std::string> list;
-  PetscCall(getStringList("-regions", list, &set));
-  PetscCheck(set && !list.empty(), comm, PETSC_ERR_USER_INPUT,
-             "missing option -regions: list the mesh regions (cell physical names: %s)",
-             joinNames(names, dim).c_str());
-  PetscCall(checkListNames(comm, "-regions", list));
-  scene.regions.clear();
-  for (const auto &name : list) {
-    Region r;
-    r.name = name;
-    PetscCall(findPhysical(comm, names, dim, name, "-regions", "region", &r.tag));
-    scene.regions.push_back(r);
-  }
+  // Regions: every one is a cell group of the mesh (above) and has a material.
   for (auto &r : scene.regions)
     PetscCall(readRegion(comm, r, scene.gravity > 0.0, scene.drained));
 
-  PetscCall(getStringList("-interfaces", list, &set));
-  PetscCall(checkListNames(comm, "-interfaces", list));
   scene.interfaces.clear();
-  for (const auto &name : list) {
+  for (const auto &name : interfaces) {
     Interface i;
     i.name = name;
     PetscCall(readInterface(comm, names, dim, scene, i));
@@ -604,15 +591,6 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
                    "(-interface_<i>_surfaces): a face group belongs to one interface",
                    other.name.c_str(), i.name.c_str(), surface.c_str());
     scene.interfaces.push_back(i);
-  }
-  PetscCall(getStringList("-boundaries", list, &set));
-  PetscCall(checkListNames(comm, "-boundaries", list));
-  scene.boundaries.clear();
-  for (const auto &name : list) {
-    Boundary b;
-    b.name = name;
-    PetscCall(findPhysical(comm, names, dim - 1, name, "-boundaries", "boundary", &b.tag));
-    scene.boundaries.push_back(b);
   }
   scene.conditions.clear();
   for (const auto &b : scene.boundaries)
@@ -629,7 +607,6 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
                "given: its water pressure is undetermined. Give T1 or T2 > 0, or prescribe p3 "
                "where it meets a boundary, or drop -interface_%s_flow",
                i.name.c_str(), i.name.c_str(), i.name.c_str());
-  PetscCall(checkOptionNames(comm, scene));
 
   double every = scene.output_every;
   PetscCall(getReal("-output_fields_every", &every, nullptr));

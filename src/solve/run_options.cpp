@@ -1,6 +1,7 @@
 #include "poroseam/run_options.hpp"
 
 #include "poroseam/collective_check.hpp"
+#include "poroseam/option_check.hpp"
 #include "poroseam/scene.hpp"
 
 #include <cctype>
@@ -56,26 +57,6 @@ const char *const kRealOptions[] = {"ts_dt",
                                     "ksp_divtol",
                                     "test_fail_dt_above",
                                     "pc_factor_shift_amount"};
-
-/// Every option set, as (name without '-', value) in the order PETSc lists them.
-PetscErrorCode allOptions(std::vector<std::pair<std::string, std::string>> &out)
-{
-  char *all = nullptr;
-  PetscFunctionBeginUser;
-  out.clear();
-  PetscCall(PetscOptionsGetAll(nullptr, &all));
-  std::istringstream in(all ? all : "");
-  PetscCall(PetscFree(all));
-  std::string token;
-  while (in >> token) {
-    // A name is '-' and a letter; "-1e6" is a value.
-    if (token.size() > 1 && token[0] == '-' && std::isalpha((unsigned char)token[1]))
-      out.emplace_back(token.substr(1), "");
-    else if (!out.empty())
-      out.back().second += (out.back().second.empty() ? "" : " ") + token;
-  }
-  PetscFunctionReturn(0);
-}
 
 /// Whether `option` is `base` or `<prefix>_base`.
 bool matches(const std::string &option, const std::string &base)

@@ -11,6 +11,7 @@
 #include "poroseam/log_events.hpp"
 #include "poroseam/mesh.hpp"
 #include "poroseam/nullspace.hpp"
+#include "poroseam/option_check.hpp"
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/run_options.hpp"
@@ -280,19 +281,6 @@ PetscErrorCode printFieldSizes(Run &run, std::vector<std::pair<std::string, long
     PetscCall(PetscPrintf(comm, "field %-14s %10ld unknowns\n", name, total[f]));
     fields->emplace_back(name, total[f]);
   }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode reportUnusedOptions(MPI_Comm comm)
-{
-  PetscInt n;
-  char **names, **values;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
-  for (PetscInt i = 0; i < n; ++i)
-    PetscCall(PetscPrintf(comm, "poroseam: warning: option -%s%s%s was given but never used\n",
-                          names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
-  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscFunctionReturn(0);
 }
 
