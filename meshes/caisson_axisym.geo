@@ -1,4 +1,4 @@
-// Suction caisson in an elastic soil layer, axisymmetric half-section (DESIGN section 4;
+// Suction caisson in an elastic soil layer, axisymmetric half-section (docs/caisson.md;
 // paper section 3) in the (x = r, y = z) plane, y up, soil surface y = 0.
 //   soil:    0 <= r <= 24 m, -12 <= z <= 0 (the soil plug inside the skirt is soil)
 //   caisson: skirt 3.8 <= r <= 3.9 m, -4 <= z <= 0, and lid r <= 3.9 m, 0 <= z <= 0.4

@@ -1,4 +1,4 @@
-// Suction caisson in an elastic soil layer, quarter model in 3D (DESIGN section 4; paper
+// Suction caisson in an elastic soil layer, quarter model in 3D (docs/caisson.md; paper
 // section 3). x >= 0, y >= 0 (symmetry planes x = 0 and y = 0), z up, soil surface z = 0.
 //   soil:    cylinder r <= 24 m, -12 <= z <= 0 (the soil plug inside the skirt is soil)
 //   caisson: skirt 3.8 <= r <= 3.9 m, -4 <= z <= 0, and lid r <= 3.9 m, 0 <= z <= 0.4

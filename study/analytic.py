@@ -1,6 +1,6 @@
 """Closed-form solutions of Biot consolidation used by the verification tests and scripts/study.
 
-Conventions (the same as poroseam, DESIGN.md section 2): tension-positive stress, absolute
+Conventions (the same as poroseam, docs/physics.md sections 1 and 2): tension-positive stress, absolute
 pore pressure p (no gravity here), Biot coefficient ``alpha``, storage ``S = 1/M``, mobility
 ``kappa = k / mu_w`` (intrinsic permeability over water viscosity).  Mass balance
 ``alpha d(div u)/dt + S dp/dt + div q = 0``, ``q = -kappa grad p``.
@@ -366,7 +366,7 @@ class Mandel:
 
 class JointColumn:
     """Terzaghi's column (alpha = 1, S = 0, step load q, drained top, impervious fixed base)
-    crossed at depth d by a closed joint of finite transversal transmissivity (DESIGN 3.2):
+    crossed at depth d by a closed joint of finite transversal transmissivity (docs/physics.md section 5):
     the water crossing it per unit area is f = T1 (p_below - p3) = T2 (p3 - p_above), so the
     pressure jumps by p_below - p_above = R f, R = 1/T1 + 1/T2, with f = kappa dp/dz (z depth,
     upward flux) continuous across it.  In each layer dp/dt = c p_zz, c = kappa M_c.

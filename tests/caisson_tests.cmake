@@ -1,4 +1,4 @@
-# Suction caisson uplift (DESIGN.md section 4, paper section 3): the checks any correct model
+# Suction caisson uplift (docs/caisson.md, paper section 3): the checks any correct model
 # must pass, on options/caisson_*.opts as they are, coarsened on the command line
 # (-mesh_size_factor 2, fewer and larger steps). Driver: tests/caisson/caisson.py (its docstring
 # says what is checked and why). Included by tests/CMakeLists.txt. About 20 s in all on 2 cores.

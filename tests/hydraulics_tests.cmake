@@ -1,4 +1,4 @@
-# Interface hydraulics (three-node scheme, DESIGN.md sections 3.2, 3.3 and 5): closed forms and
+# Interface hydraulics (three-node scheme, docs/physics.md section 5, docs/verification.md): closed forms and
 # water balances. Drivers and scenes in tests/hydraulics/ (see each driver's docstring for the
 # closed form and why the tolerance is what it is). Included by tests/CMakeLists.txt.
 #
@@ -34,7 +34,7 @@ hydraulics_test(gap_storage_mpi "hydraulics;interface;mpi" 2 hydraulics/gap_stor
 # Terzaghi through a very permeable joint = Terzaghi without it.
 hydraulics_test(terzaghi_joint "hydraulics;interface;terzaghi" 1
                 hydraulics/joint_column.py --case terzaghi)
-# Impervious sides and closed gaps (DESIGN.md section 6): T2 = 0; T1 = T2 = 0 (sealed).
+# Impervious sides and closed gaps (docs/physics.md section 5): T2 = 0; T1 = T2 = 0 (sealed).
 hydraulics_test(one_sided_closed_gap "hydraulics;interface;stability" 1
                 hydraulics/joint_column.py --case one_sided)
 poroseam_scene_test(hydraulics.sealed_gap_refused "hydraulics;interface;input"

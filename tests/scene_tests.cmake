@@ -23,7 +23,7 @@ poroseam_scene_test(verification.mandel_np2 "verification;mandel;mpi"
 poroseam_scene_test(verification.convergence_terzaghi_2d "verification;terzaghi;convergence"
                     verification/convergence.py --ranks 1)
 
-# Hard cases (DESIGN.md section 6): first steps with dt << h^2/c_v, nearly undrained loading.
+# Hard cases (docs/verification.md): first steps with dt << h^2/c_v, nearly undrained loading.
 poroseam_scene_test(verification.stability_first_step_quad "verification;stability;terzaghi"
                     verification/stability.py --case first_step)
 poroseam_scene_test(verification.stability_first_step_tri "verification;stability;terzaghi"

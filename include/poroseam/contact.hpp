@@ -1,4 +1,4 @@
-// Mechanical law of a zero-thickness interface (DESIGN 3.1, paper section 2.1): normal
+// Mechanical law of a zero-thickness interface (docs/physics.md section 4, paper section 2.1): normal
 // penalty contact without tension, and Coulomb friction written as elastoplasticity (stick =
 // elastic with tangential penalty K_T, slip = plastic on |tau| = mu p'_N), with a return
 // mapping from the last converged state. Pure point law in the local frame (e1 normal of

@@ -1,4 +1,4 @@
-// Hydraulics of a zero-thickness interface, three-node scheme (DESIGN 3.2, paper section 2.2):
+// Hydraulics of a zero-thickness interface, three-node scheme (docs/physics.md section 5, paper section 2.2):
 // pure point laws, volumetric (the mass balances are divided by rho_w). SI units.
 //   aperture          h = D0 + o                        (o: mechanical opening)
 //   longitudinal flux q_l = -(h^3 / (12 mu_w)) (grad_T p3 - rho_w g_T)   [m2/s per m width]

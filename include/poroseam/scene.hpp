@@ -73,7 +73,7 @@ struct Interface {
   double tangential_stiffness = 0.0; ///< K_T [Pa/m]
   double friction = 0.0;             ///< mu [-]
   bool nodal_integration = false;    ///< Newton-Cotes/Lobatto points at the vertices
-  // Hydraulics (three-node scheme, DESIGN 3.2): present only when flow is enabled.
+  // Hydraulics (three-node scheme, docs/physics.md section 5): present only when flow is enabled.
   bool flow = false;            ///< interface pressure p3 and its flows exist
   double aperture0 = 0.0;       ///< D0 [m], hydraulic aperture of a closed interface
   double transmissivity1 = 0.0; ///< T1 [m/(Pa s)], side 1 <-> inner (0: impervious)

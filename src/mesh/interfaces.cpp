@@ -183,7 +183,7 @@ PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
   PetscCall(checkInterfacesInside(*dm, scene, faceSets));
 
   // The sequence of DMPlexCreateHybridMesh, with faces marked explicitly (finding them from
-  // vertices picks wrong faces in thin parts; see shared/notes/petsc-3.18.md).
+  // vertices picks wrong faces in thin parts; see docs/petsc.md).
   DM sub;
   PetscCall(DMPlexCreateSubmesh(*dm, faces, 1, PETSC_TRUE, &sub));
   PetscCall(DMPlexOrient(sub));

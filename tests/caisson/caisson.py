@@ -1,4 +1,4 @@
-"""Suction caisson uplift (DESIGN.md section 4; paper section 3): the checks any correct model
+"""Suction caisson uplift (docs/caisson.md; paper section 3): the checks any correct model
 must pass, on the scenes options/caisson_*.opts as they are, coarsened from the command line.
 
     caisson.py --case axisym_drained | axisym_partially_drained | quarter_partially_drained |

@@ -1,4 +1,4 @@
-"""Storage of a gap opened at a known rate (DESIGN.md section 5, interface flow).
+"""Storage of a gap opened at a known rate (docs/verification.md, interface flow).
 
     gap_storage.py [--ranks N]
 

@@ -1,4 +1,4 @@
-"""A soil column crossed by a horizontal permeable joint (DESIGN.md sections 3.2 and 5).
+"""A soil column crossed by a horizontal permeable joint (docs/physics.md section 5, docs/verification.md).
 
     joint_column.py --case series|terzaghi|one_sided|sealed|sealed_petsc_lu [--ranks N]
     joint_column.py --case series|terzaghi --mpi-match [--ranks 2]

@@ -1,4 +1,4 @@
-"""Poiseuille flow along a gap held at a fixed opening (DESIGN.md section 5, interface flow).
+"""Poiseuille flow along a gap held at a fixed opening (docs/verification.md, interface flow).
 
     poiseuille.py --mesh quad|tri|hex|tet [--ranks N]
 

@@ -1,4 +1,4 @@
-"""Hard cases of DESIGN.md section 6 for the bulk: no pressure oscillation in the first steps
+"""Hard cases for the bulk (docs/verification.md, "Undrained limit and first steps"): no pressure oscillation in the first steps
 of consolidation, and the nearly undrained limit.
 
     stability.py --case first_step [--mesh meshes/terzaghi_column_2d_tri.geo] [--ranks N]
