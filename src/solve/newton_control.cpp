@@ -79,12 +79,19 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
   PetscFunctionBeginUser;
   PetscCall(SNESGetKSP(snes, &ksp));
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  // A user's -snes_ksp_ew (PETSc's Eisenstat-Walker forcing) wins over ours: PETSc then sets
+  // the linear tolerances itself, and we leave them alone.
+  PetscBool eisenstat_walker;
+  PetscCall(SNESKSPGetUseEW(snes, &eisenstat_walker));
+  auto setLinearTolerance = [&](double rtol) -> PetscErrorCode {
+    if (eisenstat_walker) return 0;
+    return KSPSetTolerances(ksp, rtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT);
+  };
   const double contraction =
       it > 0 && run.newton_last_fnorm > 0.0 ? fnorm / run.newton_last_fnorm : 0.0;
   run.newton_last_fnorm = fnorm;
   if (it == 0) {
-    PetscCall(KSPSetTolerances(ksp, linearTolerance(run.ksp_rtol, 0.0, run.first_contraction),
-                               PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(setLinearTolerance(linearTolerance(run.ksp_rtol, 0.0, run.first_contraction)));
     PetscFunctionReturn(0);
   }
   // PETSc's small-update test (snorm < stol |x|) alone is no convergence here: |x| holds
@@ -118,8 +125,7 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
                         (double)fnorm, target));
     *reason = SNES_DIVERGED_LOCAL_MIN;
   } else if (fnorm > 0.0) {
-    PetscCall(KSPSetTolerances(ksp, linearTolerance(run.ksp_rtol, target / fnorm, contraction),
-                               PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(setLinearTolerance(linearTolerance(run.ksp_rtol, target / fnorm, contraction)));
   }
   PetscFunctionReturn(0);
 }
