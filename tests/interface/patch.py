@@ -58,7 +58,9 @@ def main():
     for rule in ("gauss", "nodal"):
         for ratio in (1e-2, 1.0, 1e2, 1e4):
             kn = ratio * E / (0.125 if args.dim == 2 else 0.25)
-            out = common.output_dir(f"patch_{args.dim}d{'_axi' if args.axisymmetric else ''}_{rule}_{ratio:g}_np{args.ranks}")
+            # the mesh in the name: ctest runs the same case on other meshes in parallel
+            mesh = os.path.splitext(os.path.basename(args.mesh))[0] if args.mesh else "default"
+            out = common.output_dir(f"patch_{args.dim}d{'_axi' if args.axisymmetric else ''}_{mesh}_{rule}_{ratio:g}_np{args.ranks}")
             extra = ["-interface_contact_integration", rule, "-interface_contact_KN", kn,
                      "-interface_contact_KT", kn, "-region_base_nu", 0.3, "-region_block_nu", 0.3,
                      "-output_fields_every", 1]
