@@ -74,6 +74,7 @@ public:
   /// checkpoints: kHistoryValues per point, in this rank's cell order), and back.
   static constexpr int kHistoryValues = 4;
   std::vector<double> committedHistory() const;
+  size_t historyValues() const { return committed_.size() * kHistoryValues; }
   PetscErrorCode restoreHistory(const std::vector<double> &values);
 
   /// Where the contact law of some integration point of this rank changes branch (open /

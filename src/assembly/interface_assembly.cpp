@@ -437,7 +437,7 @@ std::vector<double> InterfaceAssembly::committedHistory() const
 PetscErrorCode InterfaceAssembly::restoreHistory(const std::vector<double> &values)
 {
   PetscFunctionBeginUser;
-  PetscCheck(values.size() == committed_.size() * kHistoryValues, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+  PetscCheck(values.size() == historyValues(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "interface history of %zu values for %zu integration points", values.size(),
              committed_.size());
   for (size_t i = 0; i < committed_.size(); ++i) {

@@ -37,7 +37,7 @@ PetscErrorCode layoutOf(Run &run, Vec X, double layout[3])
   PetscCall(DMGetCoordinatesLocal(run.dm, &coordinates));
   PetscCall(VecNorm(coordinates, NORM_1, &norm));
   layout[0] = (double)n;
-  layout[1] = (double)run.problem.interfaces().committedHistory().size();
+  layout[1] = (double)run.problem.interfaces().historyValues();
   layout[2] = norm;
   PetscFunctionReturn(0);
 }
@@ -251,7 +251,7 @@ PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, Checkpoi
   {
     std::vector<double> history;
     PetscCall(readValues(viewer, comm, "interface_history",
-                         (PetscInt)run.problem.interfaces().committedHistory().size(), history));
+                         (PetscInt)run.problem.interfaces().historyValues(), history));
     PetscCall(run.problem.restoreHistory(history));
   }
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, nullptr, &step));

@@ -6,7 +6,8 @@ namespace poroseam {
 namespace {
 
 constexpr int kSignals[] = {SIGTERM, SIGINT, SIGUSR1};
-constexpr int kCount = sizeof(kSignals) / sizeof(kSignals[0]);
+static_assert(sizeof(kSignals) / sizeof(kSignals[0]) == StopRequest::kCount,
+              "one saved handler per signal");
 
 // A signal handler can only reach static storage, and may only set a sig_atomic_t: the one
 // piece of process-wide state in poroseam, read by StopRequest::pending between steps.
@@ -30,7 +31,6 @@ PetscErrorCode StopRequest::install()
   PetscFunctionBeginUser;
   if (installed_) PetscFunctionReturn(0);
   received = 0;
-  previous_ = new struct sigaction[kCount];
   struct sigaction action = {};
   action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
@@ -48,8 +48,6 @@ PetscErrorCode StopRequest::restore()
   if (!installed_) PetscFunctionReturn(0);
   for (int i = 0; i < kCount; ++i)
     sigaction(kSignals[i], &previous_[i], nullptr);
-  delete[] previous_;
-  previous_ = nullptr;
   installed_ = false;
   PetscFunctionReturn(0);
 }

@@ -10,6 +10,7 @@ namespace poroseam {
 
 class StopRequest {
 public:
+  static constexpr int kCount = 3; ///< signals caught: SIGTERM, SIGINT, SIGUSR1
   /// Catches SIGTERM, SIGINT and SIGUSR1 until restore() (or destruction). A second signal
   /// of the same kind while the first is pending ends the process at once, as without us.
   PetscErrorCode install();
@@ -21,7 +22,7 @@ public:
 
 private:
   bool installed_ = false;
-  struct sigaction *previous_ = nullptr; ///< the handlers we replaced, one per signal
+  struct sigaction previous_[kCount] = {}; ///< the handlers we replaced, one per signal
 };
 
 } // namespace poroseam
