@@ -21,25 +21,26 @@ cns        A joint sheared under constant normal stiffness (tests/interface/shea
            displacement (the block's shear deformation takes 2.5e-9 of it): tolerance 1e-8 of
            the largest normal force. (Stiffer bodies, E = 1e20 as in shear_2d.opts, leave a
            round-off floor of ~1 N in the residual, which the block's free normal position
-           turns into a 5e-6 error.) Also the slope d sigma_n / d s_p = K_s tan(psi) between the last
-           steps, and the block's rise (the spring's closure change, = (sigma_n - sigma_n0) /
-           K_CNS) measured by probes.
+           turns into a 5e-6 error.) Also the slope d sigma_n / d s_p = K_s tan(psi) between
+           the first and last sliding steps below the limit, and the joint's normal gap
+           measured by probes on its faces: g_N = d - sigma_n / K_N (the faces lifted apart by
+           the dilation, pressed together by the penalty).
 cns_limit  The same with -interface_joint_dilation_limit 1e-3 m: beyond s_p = 1e-3 m the normal
            stress stays at K_s (c + tan(psi) 1e-3) and tau = mu times it.
 flow       A sheared joint carrying flow: tests/interface/poiseuille_2d.opts (near-rigid
            impervious bodies, p3 = 2e4 Pa at x = 0 and 1e4 Pa at x = L = 1 m) closed by
            c = 1e-5 m (top held: K_CNS infinite, sigma_n = K_N (c + d)) and sheared with
-           psi = 10 deg to U = 5e-4 m in 20 steps of 1000 s. The hydraulic aperture is D0 + d with d = tan(psi) s_p,
-           s_p = U - mu sigma_n / K_T, sigma_n = K_N (c + tan(psi) U) / (1 + mu K_N tan(psi) /
-           K_T), so the flow rate is (D0 + tan(psi) s_p)^3 / (12 mu_w) dp / L at every step
-           (the gap's storage rate only bends p3; (right - left) / 2 of the end outflows is the
-           mean flux, exactly the cubic law's). Checks (relative 1e-8): the flow rate, the
+           psi = 10 deg to U = 5e-4 m in 20 steps of 1000 s. The hydraulic aperture is D0 + d
+           with d = tan(psi) s_p, s_p = U - mu sigma_n / K_T, sigma_n = K_N (c + tan(psi) U) /
+           (1 + mu K_N tan(psi) / K_T), so the flow rate is (D0 + tan(psi) s_p)^3 / (12 mu_w)
+           dp / L at every step (the gap's storage rate only bends p3; (right - left) / 2 of the
+           end outflows is the mean flux, exactly the cubic law's). Checks (relative 1e-8): the flow rate, the
            aperture (storage / A), the gap's water balance right + left + storage rate = 0, and
            storage rate = (h_k - h_(k-1)) / dt (the dilation's storage telescopes).
-restart    The cns_limit scene stopped at t = 15 s (before the limit) with a checkpoint and continued with
-           -restart: every column of the time series equals the uninterrupted run's to 1e-12
-           of its kind's scale (the accumulated plastic slip is in the checkpoint; without it the
-           normal stress after the restart would drop back by K_s tan(psi) s_p).
+restart    The cns_limit scene stopped at t = 15 s (before the limit) with a checkpoint and
+           continued with -restart: every column of the time series equals the uninterrupted
+           run's to 1e-12 of its kind's scale (the accumulated plastic slip is in the checkpoint;
+           without it the normal stress after the restart would drop back by K_s tan(psi) s_p).
 """
 import argparse
 import os
@@ -128,11 +129,11 @@ def cns(args, limit):
     slope = (fn[j] - fn[i]) / (s_meas[j] - s_meas[i])
     chk.check("|d sigma_n / d s_p - K_s tan(psi)| / (K_s tan(psi))",
               abs(slope - K_S * TAN_PSI) / (K_S * TAN_PSI), 1e-8)
-    # The block rises by the spring's extra closure: probes on both faces of the joint.
-    rise = common.column(ts, "above.uy") - common.column(ts, "below.uy")
+    # The joint's normal gap, probes on both faces: lifted by d, pressed by sigma_n / K_N.
+    gap = common.column(ts, "above.uy") - common.column(ts, "below.uy")
     expected_gap = TAN_PSI * np.minimum(slip, SLIP_LIMIT if limit else np.inf) - sigma / KN
     chk.check("max |joint normal gap - (d - sigma_n / K_N)| / (tan(psi) max s_p)",
-              np.max(np.abs(rise - expected_gap)) / (TAN_PSI * slip.max()), 1e-8)
+              np.max(np.abs(gap - expected_gap)) / (TAN_PSI * slip.max()), 1e-8)
     if limit:
         past = slip > SLIP_LIMIT
         chk.check("steps past the dilation limit (>= 10)", -np.sum(past), -10)
@@ -189,7 +190,7 @@ def restart(args):
     out = common.output_dir(f"dilatancy_restart_np{args.ranks}")
     extra = cns_options(out, True)
     common.run(scene, out, extra + ["-ts_max_time", 15, "-checkpoint_every", 5], ranks=args.ranks)
-    # The continuation (common.run would refuse nothing here; the log names the checkpoint).
+    # The continuation, in the same directory (its log names the checkpoint it starts from).
     common.run(scene, out, extra + ["-restart", out], ranks=args.ranks)
     with open(os.path.join(out, "log.txt")) as f:
         log = f.read()
