@@ -34,9 +34,10 @@ flow       A sheared joint carrying flow: tests/interface/poiseuille_2d.opts (ne
            with d = tan(psi) s_p, s_p = U - mu sigma_n / K_T, sigma_n = K_N (c + tan(psi) U) /
            (1 + mu K_N tan(psi) / K_T), so the flow rate is (D0 + tan(psi) s_p)^3 / (12 mu_w)
            dp / L at every step (the gap's storage rate only bends p3; (right - left) / 2 of the
-           end outflows is the mean flux, exactly the cubic law's). Checks (relative 1e-8): the flow rate, the
-           aperture (storage / A), the gap's water balance right + left + storage rate = 0, and
-           storage rate = (h_k - h_(k-1)) / dt (the dilation's storage telescopes).
+           end outflows is the mean flux, exactly the cubic law's). Checks (relative 1e-8): the
+           flow rate, the aperture (storage / A), the gap's water balance right + left +
+           storage rate = 0, and storage rate = (h_k - h_(k-1)) / dt (the dilation's storage
+           telescopes).
 restart    The cns_limit scene stopped at t = 15 s (before the limit) with a checkpoint and
            continued with -restart: every column of the time series equals the uninterrupted
            run's to 1e-12 of its kind's scale (the accumulated plastic slip is in the checkpoint;
