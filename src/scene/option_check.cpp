@@ -49,8 +49,9 @@ const char *const kPetscPrefixes[] = {"ts_",         "snes_",  "ksp_",   "pc_", 
 const char *const kRegionKeys[] = {"material", "E",        "nu",           "rho_s",      "K0",
                                    "ground",   "porosity", "permeability", "biot_alpha", "storage"};
 const char *const kBoundaryQuantities[] = {"ux", "uy", "uz", "p", "p3", "traction", "flux"};
-const char *const kInterfaceKeys[] = {"surfaces",    "side1", "KN", "KT", "friction",
-                                      "integration", "flow",  "D0", "T1", "T2"};
+const char *const kInterfaceKeys[] = {
+    "surfaces",       "side1",       "KN",   "KT", "friction", "dilation_angle",
+    "dilation_limit", "integration", "flow", "D0", "T1",       "T2"};
 
 /// The splits poroseam names (src/solve/nullspace.cpp), and the splits inside each.
 struct Split {
