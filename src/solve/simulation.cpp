@@ -12,6 +12,7 @@
 #include "poroseam/mesh.hpp"
 #include "poroseam/nullspace.hpp"
 #include "poroseam/option_check.hpp"
+#include "poroseam/option_listing.hpp"
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/run_options.hpp"
@@ -284,6 +285,21 @@ PetscErrorCode printFieldSizes(Run &run, std::vector<std::pair<std::string, long
   PetscFunctionReturn(0);
 }
 
+/// The run's vectors, time stepper and mesh, at its end (or after -help's listing).
+PetscErrorCode releaseRun(Run &run, Vec *X)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&run.last_increment));
+  PetscCall(VecDestroy(X));
+  PetscCall(VecDestroy(&run.previous));
+  PetscCall(VecDestroy(&run.jacobian_diagonal));
+  PetscCall(VecDestroy(&run.initial));
+  PetscCall(run.time.destroy());
+  PetscCall(TSDestroy(&run.ts));
+  PetscCall(DMDestroy(&run.dm));
+  PetscFunctionReturn(0);
+}
+
 /// The run: set-up, time loop, ending; run.yaml through `record`.
 PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
 {
@@ -296,6 +312,15 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   RestartOptions restart;
   PetscCall(readCheckpointOptions(comm, run, &restart));
   if (restart.restart) run.scene.output_dir = restart.dir; // the run continues where it was
+  // -help: set up as far as every option is read (PETSc lists each with its value), write
+  // nothing to the output directory, stop before the first step (option_listing.hpp).
+  bool listing = false;
+  const std::string output_dir = run.scene.output_dir;
+  PetscCall(listingOptions(&listing));
+  if (listing) {
+    restart = RestartOptions();
+    PetscCall(beginOptionListing(comm, &run.scene.output_dir));
+  }
   { // rank 0 creates it; every rank learns whether that worked, so none waits for the others
     std::error_code failed;
     if (rank == 0) std::filesystem::create_directories(run.scene.output_dir, failed);
@@ -422,6 +447,11 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
              "default); %s%s keeps its history inside PETSc",
              restart.restart ? "-restart" : "-checkpoint_every", run.time.name(),
              run.time.adaptive() ? " with adaptive steps" : "");
+  if (listing) {
+    PetscCall(releaseRun(run, &X));
+    PetscCall(endOptionListing(comm, run.scene.output_dir, output_dir));
+    PetscFunctionReturn(0);
+  }
   if (restart.restart)
     PetscCall(PetscPrintf(comm, "restart from %s: step %d, t = %g s; output continues in %s\n",
                           checkpoint_path.c_str(), resumed.step, resumed.time,
@@ -503,14 +533,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(run.fields.close());
   PetscCall(run.interface_fields.close());
   PetscCall(endLogEvent(run.events.output));
-  PetscCall(VecDestroy(&run.last_increment));
-  PetscCall(VecDestroy(&X));
-  PetscCall(VecDestroy(&run.previous));
-  PetscCall(VecDestroy(&run.jacobian_diagonal));
-  PetscCall(VecDestroy(&run.initial));
-  PetscCall(run.time.destroy());
-  PetscCall(TSDestroy(&run.ts));
-  PetscCall(DMDestroy(&run.dm));
+  PetscCall(releaseRun(run, &X));
   PetscCall(reportUnusedOptions(comm));
   PetscCheck(message.empty(), comm, PETSC_ERR_NOT_CONVERGED, "%s", message.c_str());
   PetscFunctionReturn(0);
