@@ -13,12 +13,28 @@ namespace poroseam {
 /// Whether this run only lists its options (-help was given).
 PetscErrorCode listingOptions(bool *listing);
 
-/// Collective. Rank 0 creates a scratch directory (under $TMPDIR or /tmp) that stands in for
-/// the output directory while the options are listed; every rank learns its name.
-PetscErrorCode beginOptionListing(MPI_Comm comm, std::string *scratch_dir);
+/// The scratch directory (under $TMPDIR or /tmp) that stands in for the output directory
+/// while the options are listed. Rank 0 removes it when the listing goes out of scope, also
+/// after an error (a bad option found while listing).
+class OptionListing {
+public:
+  OptionListing() = default;
+  OptionListing(const OptionListing &) = delete;
+  OptionListing &operator=(const OptionListing &) = delete;
+  ~OptionListing();
 
-/// Collective. Removes the scratch directory and says what -help did.
-PetscErrorCode endOptionListing(MPI_Comm comm, const std::string &scratch_dir,
-                                const std::string &output_dir);
+  /// Collective. Rank 0 creates the scratch directory; every rank learns its name, which
+  /// replaces *output_dir.
+  PetscErrorCode begin(MPI_Comm comm, std::string *output_dir);
+
+  /// Collective. Removes the scratch directory and says what -help did; `output_dir` is the
+  /// directory the scene names (untouched).
+  PetscErrorCode end(MPI_Comm comm, const std::string &output_dir);
+
+private:
+  void remove();
+  std::string scratch_;
+  bool owner_ = false; ///< rank 0, which created it
+};
 
 } // namespace poroseam

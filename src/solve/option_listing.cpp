@@ -20,7 +20,20 @@ PetscErrorCode listingOptions(bool *listing)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode beginOptionListing(MPI_Comm comm, std::string *scratch_dir)
+OptionListing::~OptionListing()
+{
+  remove();
+}
+
+void OptionListing::remove()
+{
+  if (!owner_) return;
+  std::error_code ignored;
+  std::filesystem::remove_all(scratch_, ignored);
+  owner_ = false;
+}
+
+PetscErrorCode OptionListing::begin(MPI_Comm comm, std::string *output_dir)
 {
   PetscMPIInt rank;
   std::string error;
@@ -30,30 +43,25 @@ PetscErrorCode beginOptionListing(MPI_Comm comm, std::string *scratch_dir)
   if (rank == 0) {
     const char *tmp = std::getenv("TMPDIR");
     const std::string pattern = std::string(tmp && tmp[0] ? tmp : "/tmp") + "/poroseam-help-XXXXXX";
-    if (pattern.size() < name.size()) {
-      std::copy(pattern.begin(), pattern.end(), name.begin());
-      if (!mkdtemp(name.data())) error = "cannot create a scratch directory " + pattern;
-    } else {
+    if (pattern.size() >= name.size())
       error = "the scratch directory name " + pattern + " is too long";
-    }
+    else if (std::copy(pattern.begin(), pattern.end(), name.begin()), !mkdtemp(name.data()))
+      error = "cannot create a scratch directory " + pattern + " for -help (set TMPDIR)";
+    else
+      owner_ = true;
   }
   PetscCall(checkOnAllRanks(comm, error));
   PetscCallMPI(MPI_Bcast(name.data(), (int)name.size(), MPI_CHAR, 0, comm));
-  *scratch_dir = name.data();
+  scratch_ = name.data();
+  *output_dir = scratch_;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode endOptionListing(MPI_Comm comm, const std::string &scratch_dir,
-                                const std::string &output_dir)
+PetscErrorCode OptionListing::end(MPI_Comm comm, const std::string &output_dir)
 {
-  PetscMPIInt rank;
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Barrier(comm)); // every rank is done with the mesh file
-  if (rank == 0) {
-    std::error_code ignored;
-    std::filesystem::remove_all(scratch_dir, ignored);
-  }
+  remove();
   PetscCall(PetscPrintf(comm,
                         "poroseam: -help: the scene was read and checked and the solvers set "
                         "up; the options above show their values. Nothing was run or written "

@@ -315,11 +315,12 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   // -help: set up as far as every option is read (PETSc lists each with its value), write
   // nothing to the output directory, stop before the first step (option_listing.hpp).
   bool listing = false;
+  OptionListing scratch; // removed when this function returns, also after an error
   const std::string output_dir = run.scene.output_dir;
   PetscCall(listingOptions(&listing));
   if (listing) {
     restart = RestartOptions();
-    PetscCall(beginOptionListing(comm, &run.scene.output_dir));
+    PetscCall(scratch.begin(comm, &run.scene.output_dir));
   }
   { // rank 0 creates it; every rank learns whether that worked, so none waits for the others
     std::error_code failed;
@@ -358,8 +359,6 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   for (const auto &f : fields)
     unknowns += f.second;
   PetscCall(applySolverPreset(comm, run.scene.dim, unknowns));
-  PetscCall(
-      PetscOptionsGetReal(nullptr, nullptr, "-test_fail_dt_above", &run.fail_dt_above, nullptr));
 
   // Initial state and its boundary values.
   PetscCall(DMCreateLocalVector(run.dm, &run.previous));
@@ -399,8 +398,14 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   SNES snes;
   PetscCall(TSGetSNES(run.ts, &snes));
   PetscCall(SNESSetType(snes, SNESNEWTONLS));
-  PetscCall(
-      PetscOptionsGetReal(nullptr, nullptr, "-snes_reference_rtol", &run.reference_rtol, nullptr));
+  PetscOptionsBegin(comm, nullptr, "poroseam Newton convergence", "docs/scenes.md");
+  PetscCall(PetscOptionsReal("-snes_reference_rtol",
+                             "Newton converges below this fraction of the run's force scale",
+                             "docs/scenes.md", run.reference_rtol, &run.reference_rtol, nullptr));
+  PetscCall(PetscOptionsReal("-test_fail_dt_above",
+                             "test hook: step attempts with a dt above this [s] fail (0: off)",
+                             "tests/solve", run.fail_dt_above, &run.fail_dt_above, nullptr));
+  PetscOptionsEnd();
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
   PetscCall(SNESSetComputeInitialGuess(snes, chooseInitialGuess, &run));
   PetscCall(
@@ -449,7 +454,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
              run.time.adaptive() ? " with adaptive steps" : "");
   if (listing) {
     PetscCall(releaseRun(run, &X));
-    PetscCall(endOptionListing(comm, run.scene.output_dir, output_dir));
+    PetscCall(scratch.end(comm, output_dir));
     PetscFunctionReturn(0);
   }
   if (restart.restart)
