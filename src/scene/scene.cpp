@@ -153,8 +153,9 @@ PetscErrorCode readTimeFunction(PetscOptionItems *PetscOptionsObject, MPI_Comm c
   std::string table;
   PetscFunctionBeginUser;
   PetscCall(getReal(PetscOptionsObject, option + "_ramp",
-                    "ramp time [s]: " + option + " grows linearly from 0 at t = 0 to its value",
-                    &ramp, &ramp_set, "none: applied at once"));
+                    "ramp time T [s]: " + option +
+                        " grows linearly from 0 at t = 0 to its value at T (none: at once)",
+                    &ramp, &ramp_set, "none"));
   PetscCall(getString(PetscOptionsObject, option + "_table",
                       "CSV file time,factor: " + option + " times the interpolated factor", table,
                       &table_set));
