@@ -51,7 +51,8 @@ std::string optionParseError(const char *mess)
   while (!value.empty() && value.back() == ' ')
     value.pop_back();
   const std::string names = poroseam::optionsWithValue(value);
-  return (names.empty() ? "an option" : "option " + names) + " " + value + ": expected " + expected;
+  return (names.empty() ? "an option" : "option " + names) + " " + value + ": expected " +
+         expected;
 }
 
 /// Bad input and a run that cannot go on are the user's to fix, not ours to debug: say what

@@ -453,6 +453,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
              restart.restart ? "-restart" : "-checkpoint_every", run.time.name(),
              run.time.adaptive() ? " with adaptive steps" : "");
   if (listing) {
+    PetscCall(endLogPhase(run.events.layout));
     PetscCall(releaseRun(run, &X));
     PetscCall(scratch.end(comm, output_dir));
     PetscFunctionReturn(0);
