@@ -23,6 +23,12 @@ set_property(TEST input.malloc_dump_clean input.malloc_dump_clean_interface_np2 
              LABELS memory)
 # The example scenes of options/ run from the source tree as their headers say.
 poroseam_scene_test(input.user_scenes "input" input/user_scenes.py)
+# -help with a scene: every option listed once with its value and description, no step taken,
+# nothing written (tests/input/scene_help.py). A few seconds each.
+foreach(case terzaghi joint_np2 bad_value)
+  poroseam_scene_test(input.scene_help_${case} "input" input/scene_help.py --case ${case})
+endforeach()
+set_tests_properties(input.scene_help_joint_np2 PROPERTIES PROCESSORS 2 LABELS "input;mpi")
 
 # 1 rank vs 2 ranks (MUMPS LU): time series to 1e-8, fields matched by vertex coordinates.
 foreach(case terzaghi_2d terzaghi_3d two_regions_2d)

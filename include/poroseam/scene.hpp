@@ -126,8 +126,14 @@ PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene);
 
 /// Reads everything else and checks names against the mesh's physical groups.
 /// Every problem is reported as PETSC_ERR_USER_INPUT with the option and value named.
+/// Each part of the scene (its lists, the physics, each region, interface and boundary, the
+/// output) is a PetscOptionsBegin section: -help lists its options with their values.
 PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
                                 Scene &scene);
+
+/// Reads the output options (-output_fields_every, the probes -probe_<name>); part of
+/// readSceneOptions (src/scene/scene_output.cpp).
+PetscErrorCode readOutputOptions(MPI_Comm comm, Scene &scene);
 
 /// Writes the documentation of every scene option (for -help).
 void printSceneHelp(MPI_Comm comm);

@@ -145,11 +145,13 @@ int main(int argc, char **argv)
   PetscBool help_requested = PETSC_FALSE, has_mesh = PETSC_FALSE;
   PetscCall(PetscOptionsHasHelp(nullptr, &help_requested));
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-mesh", &has_mesh));
-  if (help_requested) poroseam::printSceneHelp(PETSC_COMM_WORLD);
+  // -help alone prints docs/scenes.md; with a scene, the run is set up (nothing written, no
+  // step taken) and PETSc lists every option, poroseam's and its own, with its value.
+  if (help_requested && !has_mesh) poroseam::printSceneHelp(PETSC_COMM_WORLD);
   PetscErrorCode error = 0;
   if (!help_requested || has_mesh) {
     error = poroseam::checkNumericOptions(PETSC_COMM_WORLD);
-    if (!error) error = poroseam::checkOutputDirectory(PETSC_COMM_WORLD);
+    if (!error && !help_requested) error = poroseam::checkOutputDirectory(PETSC_COMM_WORLD);
     if (!error) error = poroseam::runSimulation(PETSC_COMM_WORLD);
   }
   const bool collective =

@@ -5,6 +5,7 @@
 #include "poroseam/msh_check.hpp"
 #include "poroseam/partition.hpp"
 #include "poroseam/reference_element.hpp"
+#include "poroseam/scene_options.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -93,13 +94,17 @@ std::string meshGeometry(const std::string &geo, double size_factor, long max_el
 /// -mesh_max_elements: the largest mesh (cells of the top dimension) poroseam makes or reads.
 PetscErrorCode readMaxElements(MPI_Comm comm, long *max_elements)
 {
-  char buffer[64] = "";
-  PetscBool set = PETSC_FALSE;
+  std::string text = "2000000";
+  bool set = false;
   PetscFunctionBeginUser;
   *max_elements = 2000000;
-  PetscCall(
-      PetscOptionsGetString(nullptr, nullptr, "-mesh_max_elements", buffer, sizeof buffer, &set));
+  PetscOptionsBegin(comm, nullptr, "poroseam scene: mesh size limit", kSceneDoc);
+  PetscCall(getString(PetscOptionsObject, "-mesh_max_elements",
+                      "the largest mesh (cells of the mesh dimension) poroseam makes or reads",
+                      text, &set));
+  PetscOptionsEnd();
   if (!set) PetscFunctionReturn(0);
+  const char *buffer = text.c_str();
   char *end = nullptr;
   const double v = std::strtod(buffer, &end);
   PetscCheck(end != buffer && *end == '\0' && v >= 1 && v == std::floor(v) && v < 9e18, comm,
@@ -192,7 +197,12 @@ PetscErrorCode distributeMesh(DM *dm)
   PetscCall(PetscObjectGetComm((PetscObject)*dm, &comm));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(readPartitionerOption(comm, &kind, &kindName));
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-partitioner_report", &report, nullptr));
+  PetscOptionsBegin(comm, nullptr, "poroseam partitioning report", kSceneDoc);
+  PetscCall(PetscOptionsBool("-partitioner_report",
+                             "print the cells per rank and the cohesive cells cut from a bulk "
+                             "neighbour",
+                             kSceneDoc, report, &report, nullptr));
+  PetscOptionsEnd();
   PetscCall(configurePartitioner(*dm, kind));
   PetscCall(DMPlexDistribute(*dm, 0, nullptr, &dist));
   if (dist) {

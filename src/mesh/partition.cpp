@@ -1,6 +1,7 @@
 #include "poroseam/partition.hpp"
 
 #include "poroseam/interfaces.hpp"
+#include "poroseam/scene_options.hpp"
 
 #include <map>
 #include <metis.h>
@@ -13,7 +14,12 @@ PetscErrorCode readPartitionerOption(MPI_Comm comm, PartitionerKind *kind, std::
   char value[64] = "ptscotch";
   PetscBool set = PETSC_FALSE;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-partitioner", value, sizeof(value), &set));
+  PetscOptionsBegin(comm, nullptr, "poroseam partitioning", kSceneDoc);
+  PetscCall(PetscOptionsString("-partitioner",
+                               "how the cells are dealt out to the ranks: ptscotch, metis (keeps "
+                               "interfaces whole) or simple",
+                               kSceneDoc, "ptscotch", value, sizeof(value), &set));
+  PetscOptionsEnd();
   const std::string v = value;
   if (v == "ptscotch")
     *kind = PartitionerKind::ptscotch;

@@ -1,6 +1,7 @@
 #include "poroseam/scene.hpp"
 
 #include "poroseam/option_check.hpp"
+#include "poroseam/scene_options.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -12,24 +13,6 @@
 
 namespace poroseam {
 namespace {
-
-constexpr size_t kMaxList = 64;
-
-PetscErrorCode getStringList(const std::string &option, std::vector<std::string> &out, bool *set)
-{
-  char *items[kMaxList];
-  PetscInt n = kMaxList;
-  PetscBool found = PETSC_FALSE;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetStringArray(nullptr, nullptr, option.c_str(), items, &n, &found));
-  out.clear();
-  for (PetscInt i = 0; i < n; ++i) {
-    out.emplace_back(items[i]);
-    PetscCall(PetscFree(items[i]));
-  }
-  *set = found;
-  PetscFunctionReturn(0);
-}
 
 /// A list option names each item once, and no item is empty ("-regions soil,,rock").
 PetscErrorCode checkListNames(MPI_Comm comm, const std::string &option,
@@ -45,82 +28,6 @@ PetscErrorCode checkListNames(MPI_Comm comm, const std::string &option,
                "option %s names '%s' twice: each name must appear once", option.c_str(),
                item.c_str());
   }
-  PetscFunctionReturn(0);
-}
-
-/// Parses a number, accepting what PETSc accepts for reals (1e7, 2.5, -3); returns false
-/// for anything else so that the error can name the option.
-bool parseNumber(const std::string &text, double *value)
-{
-  const char *begin = text.c_str();
-  char *end = nullptr;
-  const double v = std::strtod(begin, &end);
-  while (end && (*end == ' ' || *end == '\t'))
-    ++end;
-  if (end == begin || !end || *end != '\0' || !std::isfinite(v)) return false;
-  *value = v;
-  return true;
-}
-
-PetscErrorCode getReal(const std::string &option, double *value, bool *set)
-{
-  char buffer[256];
-  PetscBool found = PETSC_FALSE;
-  PetscFunctionBeginUser;
-  PetscCall(
-      PetscOptionsGetString(nullptr, nullptr, option.c_str(), buffer, sizeof(buffer), &found));
-  if (found) {
-    double v;
-    PetscCheck(parseNumber(buffer, &v), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
-               "option %s %s: expected a number", option.c_str(),
-               buffer[0] ? buffer : "(no value)");
-    *value = v;
-  }
-  if (set) *set = found;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode getRequiredReal(MPI_Comm comm, const std::string &option, const std::string &what,
-                               double *value)
-{
-  bool set = false;
-  PetscFunctionBeginUser;
-  PetscCall(getReal(option, value, &set));
-  PetscCheck(set, comm, PETSC_ERR_USER_INPUT, "missing option %s: %s is required", option.c_str(),
-             what.c_str());
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode getString(const std::string &option, std::string &value, bool *set)
-{
-  char buffer[PETSC_MAX_PATH_LEN];
-  PetscBool found = PETSC_FALSE;
-  PetscFunctionBeginUser;
-  PetscCall(
-      PetscOptionsGetString(nullptr, nullptr, option.c_str(), buffer, sizeof(buffer), &found));
-  if (found) value = buffer;
-  if (set) *set = found;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode getRealList(const std::string &option, std::vector<double> &values, bool *set)
-{
-  std::string text;
-  bool found = false;
-  PetscFunctionBeginUser;
-  PetscCall(getString(option, text, &found));
-  values.clear();
-  if (found) {
-    std::istringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-      double v;
-      PetscCheck(parseNumber(item, &v), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
-                 "option %s %s: expected comma-separated numbers", option.c_str(), text.c_str());
-      values.push_back(v);
-    }
-  }
-  *set = found;
   PetscFunctionReturn(0);
 }
 
@@ -146,13 +53,17 @@ PetscErrorCode findPhysical(MPI_Comm comm, const std::vector<PhysicalName> &name
           option, what, name.c_str(), dim, joinNames(names, dim).c_str());
 }
 
-PetscErrorCode readRegion(MPI_Comm comm, Region &r, bool gravity, bool drained)
+/// A region's options, in its own -help section (PetscOptionsBegin in readSceneOptions).
+PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, Region &r,
+                          bool drained)
 {
   const std::string p = "-region_" + r.name + "_";
   std::string material;
   bool set = false;
   PetscFunctionBeginUser;
-  PetscCall(getString(p + "material", material, &set));
+  PetscCall(getString(PetscOptionsObject, p + "material",
+                      "material: elastic (solid only) or biot (porous, with pore pressure)",
+                      material, &set));
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
              "missing option %smaterial: region '%s' needs "
              "'elastic' or 'biot'",
@@ -165,22 +76,32 @@ PetscErrorCode readRegion(MPI_Comm comm, Region &r, bool gravity, bool drained)
     SETERRQ(comm, PETSC_ERR_USER_INPUT, "%smaterial %s: expected 'elastic' or 'biot'", p.c_str(),
             material.c_str());
 
-  PetscCall(getRequiredReal(comm, p + "E", "Young's modulus [Pa] of region " + r.name, &r.young));
+  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "E",
+                            "Young's modulus [Pa] of region " + r.name, &r.young));
   PetscCheck(r.young > 0.0, comm, PETSC_ERR_USER_INPUT, "%sE = %g: Young's modulus must be > 0",
              p.c_str(), r.young);
-  PetscCall(getRequiredReal(comm, p + "nu", "Poisson's ratio of region " + r.name, &r.poisson));
+  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "nu",
+                            "Poisson's ratio [-] of region " + r.name, &r.poisson));
   PetscCheck(r.poisson > -1.0 && r.poisson < 0.5, comm, PETSC_ERR_USER_INPUT,
              "%snu = %g: Poisson's ratio must lie in (-1, 0.5)", p.c_str(), r.poisson);
-  PetscCall(getReal(p + "rho_s", &r.solid_density, nullptr));
+  PetscCall(getReal(PetscOptionsObject, p + "rho_s",
+                    "grain (or solid) density rho_s [kg/m3], >= 0 (its weight with -gravity)",
+                    &r.solid_density, nullptr));
   PetscCheck(r.solid_density >= 0.0, comm, PETSC_ERR_USER_INPUT,
              "%srho_s = %g: density must be >= 0", p.c_str(), r.solid_density);
   r.k0 = r.poisson / (1.0 - r.poisson);
-  PetscCall(getReal(p + "K0", &r.k0, nullptr));
+  PetscCall(getReal(PetscOptionsObject, p + "K0",
+                    "earth pressure coefficient at rest K0 [-] of the geostatic state "
+                    "(default nu/(1-nu))",
+                    &r.k0, nullptr));
   PetscCheck(r.k0 >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sK0 = %g: must be >= 0", p.c_str(), r.k0);
   {
     // Read as text so that a bad value gets our one-line message, not PETSc's trace.
-    std::string ground;
-    PetscCall(getString(p + "ground", ground, &set));
+    std::string ground = r.inGround() ? "true" : "false";
+    PetscCall(getString(PetscOptionsObject, p + "ground",
+                        "part of the ground column of the geostatic state: true or false "
+                        "(default: true for biot, false for elastic)",
+                        ground, &set));
     if (set) {
       std::string v = ground;
       for (auto &ch : v)
@@ -195,36 +116,49 @@ PetscErrorCode readRegion(MPI_Comm comm, Region &r, bool gravity, bool drained)
     }
   }
   if (r.porous()) {
-    PetscCall(getReal(p + "porosity", &r.porosity, nullptr));
+    PetscCall(getReal(PetscOptionsObject, p + "porosity", "porosity n [-], in [0, 1)", &r.porosity,
+                      nullptr));
     PetscCheck(r.porosity >= 0.0 && r.porosity < 1.0, comm, PETSC_ERR_USER_INPUT,
                "%sporosity = %g: must lie in [0, 1)", p.c_str(), r.porosity);
     if (!drained) {
-      PetscCall(getRequiredReal(comm, p + "permeability",
+      PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "permeability",
                                 "intrinsic permeability [m2] of biot region " + r.name,
                                 &r.permeability));
     } else {
-      PetscCall(getReal(p + "permeability", &r.permeability, nullptr));
+      PetscCall(getReal(PetscOptionsObject, p + "permeability",
+                        "intrinsic permeability k [m2] (unused in a drained scene)",
+                        &r.permeability, nullptr));
     }
     PetscCheck(r.permeability >= 0.0, comm, PETSC_ERR_USER_INPUT,
                "%spermeability = %g: must be >= 0", p.c_str(), r.permeability);
-    PetscCall(getReal(p + "biot_alpha", &r.biot_coefficient, nullptr));
+    PetscCall(getReal(PetscOptionsObject, p + "biot_alpha", "Biot coefficient alpha [-], in (0, 1]",
+                      &r.biot_coefficient, nullptr));
     PetscCheck(r.biot_coefficient > 0.0 && r.biot_coefficient <= 1.0, comm, PETSC_ERR_USER_INPUT,
                "%sbiot_alpha = %g: must lie in (0, 1]", p.c_str(), r.biot_coefficient);
-    PetscCall(getReal(p + "storage", &r.storage, nullptr));
+    PetscCall(getReal(PetscOptionsObject, p + "storage",
+                      "storage 1/M [1/Pa], >= 0 (0: incompressible grains and water)", &r.storage,
+                      nullptr));
     PetscCheck(r.storage >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sstorage = %g: 1/M must be >= 0",
                p.c_str(), r.storage);
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode readTimeFunction(MPI_Comm comm, const std::string &option, TimeFunction &f)
+/// A condition's time function (-bc_<b>_<q>_ramp or _table), in the boundary's section.
+PetscErrorCode readTimeFunction(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
+                                const std::string &option, TimeFunction &f)
 {
   double ramp = 0.0;
   bool ramp_set = false, table_set = false;
   std::string table;
   PetscFunctionBeginUser;
-  PetscCall(getReal(option + "_ramp", &ramp, &ramp_set));
-  PetscCall(getString(option + "_table", table, &table_set));
+  PetscCall(getReal(PetscOptionsObject, option + "_ramp",
+                    "ramp time T [s]: " + option +
+                        " grows linearly from 0 at t = 0 to its value at T (none: at once)",
+                    &ramp, &ramp_set, "none"));
+  PetscCall(getString(PetscOptionsObject, option + "_table",
+                      "CSV file time,factor: " + option + " times the interpolated factor", table,
+                      &table_set));
   PetscCheck(!(ramp_set && table_set), comm, PETSC_ERR_USER_INPUT,
              "%s: give either %s_ramp or %s_table, not both", option.c_str(), option.c_str(),
              option.c_str());
@@ -242,8 +176,9 @@ PetscErrorCode readTimeFunction(MPI_Comm comm, const std::string &option, TimeFu
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b,
-                            std::vector<BoundaryCondition> &out)
+/// A boundary's conditions, in its own -help section (PetscOptionsBegin in readSceneOptions).
+PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const Scene &scene,
+                            const Boundary &b, std::vector<BoundaryCondition> &out)
 {
   const std::string p = "-bc_" + b.name + "_";
   const char *comps[3] = {"ux", "uy", "uz"};
@@ -252,14 +187,30 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
     PetscFunctionBeginUser;
     bc.boundary = b.name;
     bc.tag = b.tag;
-    PetscCall(readTimeFunction(comm, bc.option, bc.time));
+    PetscCall(readTimeFunction(PetscOptionsObject, comm, bc.option, bc.time));
     out.push_back(bc);
+    PetscFunctionReturn(0);
+  };
+  // A condition that cannot apply here (uz in 2D, p without pressure unknowns) is not listed
+  // by -help; given anyway, it is refused below.
+  auto condition = [&](const char *q, const std::string &help, bool applies, double *v,
+                       bool *set) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (applies) {
+      PetscCall(getReal(PetscOptionsObject, p + q, help, v, set, "none"));
+    } else {
+      PetscBool given = PETSC_FALSE;
+      PetscCall(PetscOptionsHasName(nullptr, nullptr, (p + q).c_str(), &given));
+      *set = given;
+    }
     PetscFunctionReturn(0);
   };
   for (int c = 0; c < 3; ++c) {
     double v = 0.0;
     bool set = false;
-    PetscCall(getReal(p + comps[c], &v, &set));
+    PetscCall(condition(comps[c],
+                        std::string("prescribed displacement component ") + "xyz"[c] + " [m]",
+                        c < scene.dim, &v, &set));
     if (!set) continue;
     PetscCheck(c < scene.dim, comm, PETSC_ERR_USER_INPUT,
                "%s%s: the mesh is %dD, it has no %s component", p.c_str(), comps[c], scene.dim,
@@ -274,7 +225,8 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(getReal(p + "p", &v, &set));
+    PetscCall(condition("p", "prescribed pore pressure [Pa] (absolute: hydrostatic included)",
+                        scene.hasPressure(), &v, &set));
     if (set) {
       PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
                  "%sp: the scene has no pressure unknowns (drained, or no biot region)", p.c_str());
@@ -288,7 +240,10 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(getReal(p + "p3", &v, &set));
+    PetscCall(condition("p3",
+                        "prescribed interface pressure p3 [Pa] where an interface with flow "
+                        "meets the boundary",
+                        scene.hasInterfacePressure(), &v, &set));
     if (set) {
       PetscCheck(scene.hasInterfacePressure(), comm, PETSC_ERR_USER_INPUT,
                  "%sp3: no interface of the scene has flow (-interface_<i>_flow)", p.c_str());
@@ -302,7 +257,10 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
   {
     std::vector<double> v;
     bool set = false;
-    PetscCall(getRealList(p + "traction", v, &set));
+    PetscCall(getRealList(PetscOptionsObject, p + "traction",
+                          "applied traction [Pa], " + std::to_string(scene.dim) +
+                              " comma-separated components (tension positive: sigma n)",
+                          v, &set));
     if (set) {
       PetscCheck((int)v.size() == scene.dim, comm, PETSC_ERR_USER_INPUT,
                  "%straction: expected %d comma-separated components, got %d", p.c_str(), scene.dim,
@@ -317,16 +275,16 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(getReal(p + "flux", &v, &set));
+    PetscCall(condition("flux", "outward Darcy flux q.n [m/s] (positive: water leaves)",
+                        scene.hasPressure(), &v, &set));
     if (set) {
       PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
                  "%sflux: the scene has no pressure unknowns (drained, or no biot region)",
                  p.c_str());
       // A prescribed pressure fixes the water at the boundary: a flux there would be ignored.
-      const bool pressure =
-          std::any_of(out.begin(), out.end(), [&](const BoundaryCondition &c) {
-            return c.boundary == b.name && c.kind == BcKind::pressure;
-          });
+      const bool pressure = std::any_of(out.begin(), out.end(), [&](const BoundaryCondition &c) {
+        return c.boundary == b.name && c.kind == BcKind::pressure;
+      });
       PetscCheck(!pressure, comm, PETSC_ERR_USER_INPUT,
                  "%sflux and %sp on the same boundary '%s': a prescribed pressure leaves no "
                  "flux to prescribe; give one of them (or split the boundary in the mesh)",
@@ -341,22 +299,30 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode readInterface(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
-                             const Scene &scene, Interface &i)
+/// An interface's options, in its own -help section (PetscOptionsBegin in readSceneOptions).
+PetscErrorCode readInterface(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
+                             const std::vector<PhysicalName> &names, int dim, const Scene &scene,
+                             Interface &i)
 {
   const std::string p = "-interface_" + i.name + "_";
   bool set = false;
   PetscFunctionBeginUser;
-  PetscCall(getStringList(p + "surfaces", i.surfaces, &set));
+  PetscCall(getStringList(PetscOptionsObject, p + "surfaces",
+                          "its Gmsh face groups, comma-separated (default: the group named " +
+                              i.name + ")",
+                          i.surfaces, &set));
   if (!set) i.surfaces = {i.name};
   PetscCall(checkListNames(comm, p + "surfaces", i.surfaces));
+  i.tags.clear();
   for (const auto &surface : i.surfaces) {
     int tag;
     PetscCall(findPhysical(comm, names, dim - 1, surface, (p + "surfaces").c_str(),
                            "interface surface", &tag));
     i.tags.push_back(tag);
   }
-  PetscCall(getString(p + "side1", i.side1, &set));
+  PetscCall(getString(PetscOptionsObject, p + "side1",
+                      "the region on side 1: the normal e1 points from it to side 2 (required)",
+                      i.side1, &set));
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
              "missing option %sside1: name the region on side 1 of interface '%s'", p.c_str(),
              i.name.c_str());
@@ -365,17 +331,18 @@ PetscErrorCode readInterface(MPI_Comm comm, const std::vector<PhysicalName> &nam
     if (r.name == i.side1) known = true, i.side1_tag = r.tag;
   PetscCheck(known, comm, PETSC_ERR_USER_INPUT, "%sside1 %s: not a region listed in -regions",
              p.c_str(), i.side1.c_str());
-  PetscCall(getRequiredReal(comm, p + "KN",
+  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "KN",
                             "normal penalty stiffness K_N [Pa/m] of interface " + i.name,
                             &i.normal_stiffness));
   PetscCheck(i.normal_stiffness > 0.0, comm, PETSC_ERR_USER_INPUT, "%sKN = %g: must be > 0",
              p.c_str(), i.normal_stiffness);
-  PetscCall(getRequiredReal(comm, p + "KT",
+  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "KT",
                             "tangential penalty stiffness K_T [Pa/m] of interface " + i.name,
                             &i.tangential_stiffness));
   PetscCheck(i.tangential_stiffness > 0.0, comm, PETSC_ERR_USER_INPUT, "%sKT = %g: must be > 0",
              p.c_str(), i.tangential_stiffness);
-  PetscCall(getRequiredReal(comm, p + "friction", "friction coefficient mu of interface " + i.name,
+  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "friction",
+                            "Coulomb friction coefficient mu [-] of interface " + i.name,
                             &i.friction));
   PetscCheck(i.friction >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sfriction = %g: must be >= 0",
              p.c_str(), i.friction);
@@ -395,63 +362,33 @@ PetscErrorCode readInterface(MPI_Comm comm, const std::vector<PhysicalName> &nam
     i.dilation_slip_limit = slip_limit;
   }
   std::string rule = "gauss";
-  PetscCall(getString(p + "integration", rule, nullptr));
+  PetscCall(getString(PetscOptionsObject, p + "integration",
+                      "integration points: gauss, or nodal (Newton-Cotes/Lobatto at the vertices)",
+                      rule, nullptr));
   PetscCheck(rule == "gauss" || rule == "nodal", comm, PETSC_ERR_USER_INPUT,
              "%sintegration %s: expected 'gauss' or 'nodal'", p.c_str(), rule.c_str());
   i.nodal_integration = rule == "nodal";
-  PetscBool flow = PETSC_FALSE;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, (p + "flow").c_str(), &flow, nullptr));
-  i.flow = flow;
+  i.flow = false;
+  PetscCall(getFlag(PetscOptionsObject, p + "flow",
+                    "water flows in and through the interface (interface pressure p3)", &i.flow,
+                    nullptr));
   if (i.flow) {
     PetscCheck(!scene.drained, comm, PETSC_ERR_USER_INPUT,
                "%sflow: a drained scene has no pressure, so no interface flow", p.c_str());
-    PetscCall(getRequiredReal(comm, p + "D0", "hydraulic aperture D0 [m] of interface " + i.name,
-                              &i.aperture0));
+    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "D0",
+                              "hydraulic aperture D0 [m] of interface " + i.name, &i.aperture0));
     PetscCheck(i.aperture0 > 0.0, comm, PETSC_ERR_USER_INPUT, "%sD0 = %g: must be > 0", p.c_str(),
                i.aperture0);
-    PetscCall(getRequiredReal(comm, p + "T1",
+    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "T1",
                               "transmissivity T1 [m/(Pa s)] between side 1 and interface " + i.name,
                               &i.transmissivity1));
-    PetscCall(getRequiredReal(
-        comm, p + "T2", "transmissivity T2 [m/(Pa s)] between interface " + i.name + " and side 2",
-        &i.transmissivity2));
+    PetscCall(
+        getRequiredReal(PetscOptionsObject, comm, p + "T2",
+                        "transmissivity T2 [m/(Pa s)] between interface " + i.name + " and side 2",
+                        &i.transmissivity2));
     PetscCheck(i.transmissivity1 >= 0.0 && i.transmissivity2 >= 0.0, comm, PETSC_ERR_USER_INPUT,
                "%sT1 = %g, %sT2 = %g: transmissivities must be >= 0 (0: impervious side)",
                p.c_str(), i.transmissivity1, p.c_str(), i.transmissivity2);
-  }
-  PetscFunctionReturn(0);
-}
-
-/// Names used in options of the form -<prefix><name>_..., for spotting typos.
-std::set<std::string> optionsWithPrefix(const std::string &all, const std::string &prefix)
-{
-  std::set<std::string> found;
-  std::istringstream in(all);
-  std::string token;
-  while (in >> token)
-    if (token.rfind("-" + prefix, 0) == 0) found.insert(token.substr(1));
-  return found;
-}
-
-PetscErrorCode readProbes(MPI_Comm comm, Scene &scene)
-{
-  char *all = nullptr;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetAll(nullptr, &all));
-  const std::string text = all;
-  PetscCall(PetscFree(all));
-  for (const auto &opt : optionsWithPrefix(text, "probe_")) {
-    Probe probe;
-    probe.name = opt.substr(6);
-    std::vector<double> x;
-    bool set = false;
-    PetscCall(getRealList("-" + opt, x, &set));
-    PetscCheck((int)x.size() == scene.dim, comm, PETSC_ERR_USER_INPUT,
-               "-%s: expected %d comma-separated coordinates, got %d", opt.c_str(), scene.dim,
-               (int)x.size());
-    for (int d = 0; d < scene.dim; ++d)
-      probe.x[d] = x[d];
-    scene.probes.push_back(probe);
   }
   PetscFunctionReturn(0);
 }
@@ -483,15 +420,108 @@ PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
   PetscFunctionBeginUser;
   // The scene-wide names first: "missing option -mesh" would hide that -mseh was given.
   PetscCall(checkOptionNames(comm, SceneNames{}));
-  PetscCall(getString("-mesh", scene.mesh_file, &set));
+  PetscOptionsBegin(comm, nullptr, "poroseam scene: mesh and output directory", kSceneDoc);
+  PetscCall(getString(PetscOptionsObject, "-mesh",
+                      "Gmsh mesh (.msh) or geometry (.geo, meshed by gmsh) (required)",
+                      scene.mesh_file, &set));
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
              "missing option -mesh: name a Gmsh mesh (.msh) or geometry (.geo) file");
-  PetscCall(getReal("-mesh_size_factor", &scene.mesh_size_factor, nullptr));
+  PetscCall(getReal(PetscOptionsObject, "-mesh_size_factor",
+                    "gmsh -clscale for a .geo [-] (0.5 halves every element size)",
+                    &scene.mesh_size_factor, nullptr));
   PetscCheck(scene.mesh_size_factor > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-mesh_size_factor %g: must be > 0", scene.mesh_size_factor);
-  PetscCall(getString("-output_dir", scene.output_dir, nullptr));
+  PetscCall(getString(PetscOptionsObject, "-output_dir", "directory of the results",
+                      scene.output_dir, nullptr));
+  PetscOptionsEnd();
   PetscFunctionReturn(0);
 }
+
+namespace {
+
+/// The scene-wide physics and the initial state.
+PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
+                           const std::vector<PhysicalName> &names, int dim, Scene &scene)
+{
+  bool set = false;
+  PetscFunctionBeginUser;
+  scene.drained = false;
+  PetscCall(getFlag(PetscOptionsObject, "-drained",
+                    "drained analysis: no pressure unknowns anywhere", &scene.drained, nullptr));
+  scene.axisymmetric = false;
+  PetscCall(getFlag(PetscOptionsObject, "-axisymmetric",
+                    "2D meshes: axisymmetric about the y axis, x = r >= 0 (results per full "
+                    "circle)",
+                    &scene.axisymmetric, nullptr));
+  PetscCheck(!scene.axisymmetric || dim == 2, comm, PETSC_ERR_USER_INPUT,
+             "-axisymmetric: needs a 2D mesh in the (r, z) = (x, y) plane; this mesh is %dD", dim);
+  PetscCall(getReal(PetscOptionsObject, "-gravity",
+                    "gravitational acceleration g [m/s2] along -y (2D) or -z (3D); 0: off",
+                    &scene.gravity, nullptr));
+  PetscCheck(scene.gravity >= 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-gravity %g: give the magnitude g >= 0 (it acts along -y in 2D, -z in 3D)",
+             scene.gravity);
+  PetscCall(getReal(PetscOptionsObject, "-fluid_density", "water density rho_w [kg/m3]",
+                    &scene.fluid_density, nullptr));
+  PetscCall(getReal(PetscOptionsObject, "-fluid_viscosity", "water viscosity mu_w [Pa s]",
+                    &scene.fluid_viscosity, nullptr));
+  PetscCheck(scene.fluid_density > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-fluid_density %g: must be > 0", scene.fluid_density);
+  PetscCheck(scene.fluid_viscosity > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-fluid_viscosity %g: must be > 0", scene.fluid_viscosity);
+  PetscCall(getReal(PetscOptionsObject, "-stabilization_factor",
+                    "pressure stabilisation factor F [-] (0 disables)", &scene.stabilization_factor,
+                    nullptr));
+  PetscCheck(scene.stabilization_factor >= 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-stabilization_factor %g: must be >= 0", scene.stabilization_factor);
+
+  std::string initial = "none";
+  PetscCall(getString(PetscOptionsObject, "-initial_state",
+                      "none, or geostatic (K0 effective stresses and hydrostatic pressure)",
+                      initial, nullptr));
+  PetscCheck(initial == "none" || initial == "geostatic", comm, PETSC_ERR_USER_INPUT,
+             "-initial_state %s: expected 'none' or 'geostatic'", initial.c_str());
+  scene.geostatic = initial == "geostatic";
+  PetscCheck(!scene.geostatic || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-initial_state geostatic needs -gravity > 0");
+  PetscCall(getReal(PetscOptionsObject, "-surface_elevation",
+                    "soil surface elevation [m] of the geostatic state", &scene.surface_elevation,
+                    nullptr));
+  scene.water_level = scene.surface_elevation;
+  PetscCall(getReal(PetscOptionsObject, "-water_level",
+                    "phreatic level [m] of the hydrostatic pressure (default: the surface)",
+                    &scene.water_level, nullptr));
+  // The free water above the ground pushes on the boundaries it stands on; the geostatic
+  // state balances that load, so with water above the surface it must be applied.
+  std::vector<std::string> names_w;
+  PetscCall(getStringList(PetscOptionsObject, "-water_load_boundaries",
+                          "boundaries the free water stands on (comma-separated): they carry "
+                          "its pressure",
+                          names_w, &set));
+  PetscCheck(!set || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-water_load_boundaries: the water's pressure needs -gravity > 0");
+  scene.water_load_boundaries.clear();
+  for (const auto &name : names_w) {
+    Boundary b;
+    b.name = name;
+    PetscCall(
+        findPhysical(comm, names, dim - 1, name, "-water_load_boundaries", "boundary", &b.tag));
+    for (const auto &other : scene.water_load_boundaries)
+      PetscCheck(other.name != name, comm, PETSC_ERR_USER_INPUT,
+                 "-water_load_boundaries: '%s' is listed twice; list each boundary once",
+                 name.c_str());
+    scene.water_load_boundaries.push_back(b);
+  }
+  PetscCheck(!scene.geostatic || scene.water_level <= scene.surface_elevation ||
+                 !scene.water_load_boundaries.empty(),
+             comm, PETSC_ERR_USER_INPUT,
+             "-water_level %g is above -surface_elevation %g: the water's weight acts on the "
+             "soil surface; name the boundaries it stands on with -water_load_boundaries",
+             scene.water_level, scene.surface_elevation);
+  PetscFunctionReturn(0);
+}
+
+} // namespace
 
 PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
                                 Scene &scene)
@@ -503,10 +533,20 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   // before it shows as a missing one ("missing option -region_soil_E" when -region_soil_e
   // was given) or as a wrong default.
   std::vector<std::string> regions, interfaces, boundaries;
-  PetscCall(getStringList("-regions", regions, &set));
+  PetscOptionsBegin(comm, nullptr, "poroseam scene: its parts (physical groups of the mesh)",
+                    kSceneDoc);
+  PetscCall(getStringList(PetscOptionsObject, "-regions",
+                          "the regions (cell groups), comma-separated; every cell in one", regions,
+                          &set));
   PetscCheck(set && !regions.empty(), comm, PETSC_ERR_USER_INPUT,
              "missing option -regions: list the mesh regions (cell physical names: %s)",
              joinNames(names, dim).c_str());
+  PetscCall(getStringList(PetscOptionsObject, "-boundaries",
+                          "the boundaries (face groups) the scene uses, comma-separated",
+                          boundaries, &set));
+  PetscCall(getStringList(PetscOptionsObject, "-interfaces",
+                          "the zero-thickness interfaces, comma-separated", interfaces, &set));
+  PetscOptionsEnd();
   PetscCall(checkListNames(comm, "-regions", regions));
   scene.regions.clear();
   for (const auto &name : regions) {
@@ -515,9 +555,7 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
     PetscCall(findPhysical(comm, names, dim, name, "-regions", "region", &r.tag));
     scene.regions.push_back(r);
   }
-  PetscCall(getStringList("-interfaces", interfaces, &set));
   PetscCall(checkListNames(comm, "-interfaces", interfaces));
-  PetscCall(getStringList("-boundaries", boundaries, &set));
   PetscCall(checkListNames(comm, "-boundaries", boundaries));
   scene.boundaries.clear();
   for (const auto &name : boundaries) {
@@ -528,74 +566,26 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   }
   PetscCall(checkOptionNames(comm, SceneNames{dim, regions, boundaries, interfaces, names}));
 
-  PetscBool flag = PETSC_FALSE;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-drained", &flag, nullptr));
-  scene.drained = flag;
-  flag = PETSC_FALSE;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-axisymmetric", &flag, nullptr));
-  scene.axisymmetric = flag;
-  PetscCheck(!scene.axisymmetric || dim == 2, comm, PETSC_ERR_USER_INPUT,
-             "-axisymmetric: needs a 2D mesh in the (r, z) = (x, y) plane; this mesh is %dD", dim);
-  PetscCall(getReal("-gravity", &scene.gravity, nullptr));
-  PetscCheck(scene.gravity >= 0.0, comm, PETSC_ERR_USER_INPUT,
-             "-gravity %g: give the magnitude g >= 0 (it acts along -y in 2D, -z in 3D)",
-             scene.gravity);
-  PetscCall(getReal("-fluid_density", &scene.fluid_density, nullptr));
-  PetscCall(getReal("-fluid_viscosity", &scene.fluid_viscosity, nullptr));
-  PetscCheck(scene.fluid_density > 0.0, comm, PETSC_ERR_USER_INPUT,
-             "-fluid_density %g: must be > 0", scene.fluid_density);
-  PetscCheck(scene.fluid_viscosity > 0.0, comm, PETSC_ERR_USER_INPUT,
-             "-fluid_viscosity %g: must be > 0", scene.fluid_viscosity);
-  PetscCall(getReal("-stabilization_factor", &scene.stabilization_factor, nullptr));
-  PetscCheck(scene.stabilization_factor >= 0.0, comm, PETSC_ERR_USER_INPUT,
-             "-stabilization_factor %g: must be >= 0", scene.stabilization_factor);
-
-  std::string initial = "none";
-  PetscCall(getString("-initial_state", initial, nullptr));
-  PetscCheck(initial == "none" || initial == "geostatic", comm, PETSC_ERR_USER_INPUT,
-             "-initial_state %s: expected 'none' or 'geostatic'", initial.c_str());
-  scene.geostatic = initial == "geostatic";
-  PetscCheck(!scene.geostatic || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
-             "-initial_state geostatic needs -gravity > 0");
-  PetscCall(getReal("-surface_elevation", &scene.surface_elevation, nullptr));
-  scene.water_level = scene.surface_elevation;
-  PetscCall(getReal("-water_level", &scene.water_level, nullptr));
-  {
-    // The free water above the ground pushes on the boundaries it stands on; the geostatic
-    // state balances that load, so with water above the surface it must be applied.
-    std::vector<std::string> names_w;
-    PetscCall(getStringList("-water_load_boundaries", names_w, &set));
-    PetscCheck(!set || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
-               "-water_load_boundaries: the water's pressure needs -gravity > 0");
-    scene.water_load_boundaries.clear();
-    for (const auto &name : names_w) {
-      Boundary b;
-      b.name = name;
-      PetscCall(findPhysical(comm, names, dim - 1, name, "-water_load_boundaries", "boundary",
-                             &b.tag));
-      for (const auto &other : scene.water_load_boundaries)
-        PetscCheck(other.name != name, comm, PETSC_ERR_USER_INPUT,
-                   "-water_load_boundaries: '%s' is listed twice; list each boundary once",
-                   name.c_str());
-      scene.water_load_boundaries.push_back(b);
-    }
-    PetscCheck(!scene.geostatic || scene.water_level <= scene.surface_elevation ||
-                   !scene.water_load_boundaries.empty(),
-               comm, PETSC_ERR_USER_INPUT,
-               "-water_level %g is above -surface_elevation %g: the water's weight acts on the "
-               "soil surface; name the boundaries it stands on with -water_load_boundaries",
-               scene.water_level, scene.surface_elevation);
-  }
+  PetscOptionsBegin(comm, nullptr, "poroseam scene: physics and initial state", kSceneDoc);
+  PetscCall(readPhysics(PetscOptionsObject, comm, names, dim, scene));
+  PetscOptionsEnd();
 
   // Regions: every one is a cell group of the mesh (above) and has a material.
-  for (auto &r : scene.regions)
-    PetscCall(readRegion(comm, r, scene.gravity > 0.0, scene.drained));
+  for (auto &r : scene.regions) {
+    const std::string title = "poroseam region " + r.name + " (-region_" + r.name + "_*)";
+    PetscOptionsBegin(comm, nullptr, title.c_str(), kSceneDoc);
+    PetscCall(readRegion(PetscOptionsObject, comm, r, scene.drained));
+    PetscOptionsEnd();
+  }
 
   scene.interfaces.clear();
   for (const auto &name : interfaces) {
     Interface i;
     i.name = name;
-    PetscCall(readInterface(comm, names, dim, scene, i));
+    const std::string title = "poroseam interface " + name + " (-interface_" + name + "_*)";
+    PetscOptionsBegin(comm, nullptr, title.c_str(), kSceneDoc);
+    PetscCall(readInterface(PetscOptionsObject, comm, names, dim, scene, i));
+    PetscOptionsEnd();
     // A face group is split once: it cannot belong to two interfaces.
     for (const auto &other : scene.interfaces)
       for (const auto &surface : i.surfaces)
@@ -608,8 +598,12 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
     scene.interfaces.push_back(i);
   }
   scene.conditions.clear();
-  for (const auto &b : scene.boundaries)
-    PetscCall(readBoundary(comm, scene, b, scene.conditions));
+  for (const auto &b : scene.boundaries) {
+    const std::string title = "poroseam boundary " + b.name + " (-bc_" + b.name + "_*)";
+    PetscOptionsBegin(comm, nullptr, title.c_str(), kSceneDoc);
+    PetscCall(readBoundary(PetscOptionsObject, comm, scene, b, scene.conditions));
+    PetscOptionsEnd();
+  }
   // An interface that can neither exchange water with its sides nor at its ends has an
   // undetermined pressure level (only its gradient enters): the linear systems are singular.
   const bool p3_prescribed =
@@ -623,13 +617,7 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
                "where it meets a boundary, or drop -interface_%s_flow",
                i.name.c_str(), i.name.c_str(), i.name.c_str());
 
-  double every = scene.output_every;
-  PetscCall(getReal("-output_fields_every", &every, nullptr));
-  PetscCheck(every >= 0 && every == std::floor(every), comm, PETSC_ERR_USER_INPUT,
-             "-output_fields_every %g: expected a whole number >= 0", every);
-  scene.output_every = (int)every;
-  scene.probes.clear();
-  PetscCall(readProbes(comm, scene));
+  PetscCall(readOutputOptions(comm, scene));
   PetscFunctionReturn(0);
 }
 

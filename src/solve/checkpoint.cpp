@@ -286,14 +286,24 @@ PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *re
   PetscBool set = PETSC_FALSE, step_set = PETSC_FALSE;
   PetscInt every = 0, step = -1;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-checkpoint_every", &every, nullptr));
+  PetscOptionsBegin(comm, nullptr, "poroseam checkpoints and restarts", "docs/checkpoints.md");
+  PetscCall(PetscOptionsInt("-checkpoint_every",
+                            "a checkpoint every N steps (0: only when a run stops early)",
+                            "docs/checkpoints.md", every, &every, nullptr));
+  PetscCall(PetscOptionsString("-restart",
+                               "continue the run in this output directory from its latest "
+                               "checkpoint",
+                               "docs/checkpoints.md", "(none)", dir, sizeof(dir), &set));
+  PetscCall(PetscOptionsInt("-restart_step",
+                            "with -restart: continue from this step's checkpoint (default: the "
+                            "latest)",
+                            "docs/checkpoints.md", step, &step, &step_set));
+  PetscOptionsEnd();
   PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT,
              "-checkpoint_every %d: expected a number of steps >= 0 (0: checkpoints only when a "
              "run stops early)",
              (int)every);
   run.checkpoint_every = (int)every;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-restart", dir, sizeof(dir), &set));
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-restart_step", &step, &step_set));
   PetscCheck(!step_set || set, comm, PETSC_ERR_USER_INPUT,
              "-restart_step %d needs -restart <output directory of the run to continue>",
              (int)step);

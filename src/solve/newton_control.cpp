@@ -6,9 +6,9 @@
 #include "poroseam/newton_forcing.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <petscsnes.h>
 #include <vector>
-#include <cmath>
 
 namespace poroseam {
 namespace simulation_detail {
@@ -303,8 +303,8 @@ PetscErrorCode kinkLineSearch(SNESLineSearch ls, void *ctx)
       PetscCall(evaluateAt(snes, X, Y, c, W, G, &value, &ok));
       if (ok && value <= (1.0 - armijo * c) * fnorm) lambda = c, gnorm = value, accepted = true;
     }
-    PetscCall(PetscInfo(snes, "poroseam: %zu kinks on the step; lambda %g, residual %g -> %g\n",
-                        nk, accepted ? lambda : 0.0, (double)fnorm, accepted ? gnorm : fnorm));
+    PetscCall(PetscInfo(snes, "poroseam: %zu kinks on the step; lambda %g, residual %g -> %g\n", nk,
+                        accepted ? lambda : 0.0, (double)fnorm, accepted ? gnorm : fnorm));
   }
   if (!accepted) {
     // No point of the step lowers the residual. If the iterate already meets the force test
@@ -335,7 +335,13 @@ PetscErrorCode configureLineSearch(Run &run, SNES snes)
   PetscBool use = run.scene.interfaces.empty() ? PETSC_FALSE : PETSC_TRUE;
   SNESLineSearch ls;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-snes_kink_linesearch", &use, nullptr));
+  PetscOptionsBegin(PetscObjectComm((PetscObject)snes), nullptr, "poroseam line search",
+                    "docs/scenes.md");
+  PetscCall(PetscOptionsBool("-snes_kink_linesearch",
+                             "poroseam's line search through the contact and friction kinks "
+                             "(default: on with interfaces)",
+                             "docs/scenes.md", use, &use, nullptr));
+  PetscOptionsEnd();
   if (!use) PetscFunctionReturn(0);
   PetscCall(SNESGetLineSearch(snes, &ls));
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHSHELL));

@@ -12,6 +12,7 @@
 #include "poroseam/mesh.hpp"
 #include "poroseam/nullspace.hpp"
 #include "poroseam/option_check.hpp"
+#include "poroseam/option_listing.hpp"
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/run_options.hpp"
@@ -284,6 +285,21 @@ PetscErrorCode printFieldSizes(Run &run, std::vector<std::pair<std::string, long
   PetscFunctionReturn(0);
 }
 
+/// The run's vectors, time stepper and mesh, at its end (or after -help's listing).
+PetscErrorCode releaseRun(Run &run, Vec *X)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&run.last_increment));
+  PetscCall(VecDestroy(X));
+  PetscCall(VecDestroy(&run.previous));
+  PetscCall(VecDestroy(&run.jacobian_diagonal));
+  PetscCall(VecDestroy(&run.initial));
+  PetscCall(run.time.destroy());
+  PetscCall(TSDestroy(&run.ts));
+  PetscCall(DMDestroy(&run.dm));
+  PetscFunctionReturn(0);
+}
+
 /// The run: set-up, time loop, ending; run.yaml through `record`.
 PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
 {
@@ -296,6 +312,16 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   RestartOptions restart;
   PetscCall(readCheckpointOptions(comm, run, &restart));
   if (restart.restart) run.scene.output_dir = restart.dir; // the run continues where it was
+  // -help: set up as far as every option is read (PETSc lists each with its value), write
+  // nothing to the output directory, stop before the first step (option_listing.hpp).
+  bool listing = false;
+  OptionListing scratch; // removed when this function returns, also after an error
+  const std::string output_dir = run.scene.output_dir;
+  PetscCall(listingOptions(&listing));
+  if (listing) {
+    restart = RestartOptions();
+    PetscCall(scratch.begin(comm, &run.scene.output_dir));
+  }
   { // rank 0 creates it; every rank learns whether that worked, so none waits for the others
     std::error_code failed;
     if (rank == 0) std::filesystem::create_directories(run.scene.output_dir, failed);
@@ -333,8 +359,6 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   for (const auto &f : fields)
     unknowns += f.second;
   PetscCall(applySolverPreset(comm, run.scene.dim, unknowns));
-  PetscCall(
-      PetscOptionsGetReal(nullptr, nullptr, "-test_fail_dt_above", &run.fail_dt_above, nullptr));
 
   // Initial state and its boundary values.
   PetscCall(DMCreateLocalVector(run.dm, &run.previous));
@@ -374,8 +398,14 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   SNES snes;
   PetscCall(TSGetSNES(run.ts, &snes));
   PetscCall(SNESSetType(snes, SNESNEWTONLS));
-  PetscCall(
-      PetscOptionsGetReal(nullptr, nullptr, "-snes_reference_rtol", &run.reference_rtol, nullptr));
+  PetscOptionsBegin(comm, nullptr, "poroseam Newton convergence", "docs/scenes.md");
+  PetscCall(PetscOptionsReal("-snes_reference_rtol",
+                             "Newton converges below this fraction of the run's force scale",
+                             "docs/scenes.md", run.reference_rtol, &run.reference_rtol, nullptr));
+  PetscCall(PetscOptionsReal("-test_fail_dt_above",
+                             "test hook: step attempts with a dt above this [s] fail (0: off)",
+                             "tests/solve", run.fail_dt_above, &run.fail_dt_above, nullptr));
+  PetscOptionsEnd();
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
   PetscCall(SNESSetComputeInitialGuess(snes, chooseInitialGuess, &run));
   PetscCall(
@@ -422,6 +452,12 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
              "default); %s%s keeps its history inside PETSc",
              restart.restart ? "-restart" : "-checkpoint_every", run.time.name(),
              run.time.adaptive() ? " with adaptive steps" : "");
+  if (listing) {
+    PetscCall(endLogPhase(run.events.layout));
+    PetscCall(releaseRun(run, &X));
+    PetscCall(scratch.end(comm, output_dir));
+    PetscFunctionReturn(0);
+  }
   if (restart.restart)
     PetscCall(PetscPrintf(comm, "restart from %s: step %d, t = %g s; output continues in %s\n",
                           checkpoint_path.c_str(), resumed.step, resumed.time,
@@ -503,14 +539,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(run.fields.close());
   PetscCall(run.interface_fields.close());
   PetscCall(endLogEvent(run.events.output));
-  PetscCall(VecDestroy(&run.last_increment));
-  PetscCall(VecDestroy(&X));
-  PetscCall(VecDestroy(&run.previous));
-  PetscCall(VecDestroy(&run.jacobian_diagonal));
-  PetscCall(VecDestroy(&run.initial));
-  PetscCall(run.time.destroy());
-  PetscCall(TSDestroy(&run.ts));
-  PetscCall(DMDestroy(&run.dm));
+  PetscCall(releaseRun(run, &X));
   PetscCall(reportUnusedOptions(comm));
   PetscCheck(message.empty(), comm, PETSC_ERR_NOT_CONVERGED, "%s", message.c_str());
   PetscFunctionReturn(0);

@@ -69,9 +69,15 @@ PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns)
   PetscBool given;
   PetscInt threshold = 30000;
   PetscFunctionBeginUser;
-  PetscCall(
-      PetscOptionsGetString(nullptr, nullptr, "-solver_preset", buffer, sizeof buffer, &given));
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-solver_auto_threshold", &threshold, nullptr));
+  PetscOptionsBegin(comm, nullptr, "poroseam solver preset", "docs/scenes.md");
+  PetscCall(PetscOptionsString("-solver_preset",
+                               "auto, direct, fieldsplit or <name>: insert "
+                               "options/solvers/<name>.opts (options not set already)",
+                               "docs/scenes.md", "(none)", buffer, sizeof buffer, &given));
+  PetscCall(PetscOptionsInt("-solver_auto_threshold",
+                            "unknowns above which auto chooses the iterative preset in 3D",
+                            "docs/scenes.md", threshold, &threshold, nullptr));
+  PetscOptionsEnd();
   PetscCheck(threshold >= 0, comm, PETSC_ERR_USER_INPUT,
              "-solver_auto_threshold %" PetscInt_FMT ": expected a number of unknowns >= 0",
              threshold);
