@@ -348,12 +348,17 @@ PetscErrorCode readInterface(PetscOptionItems *PetscOptionsObject, MPI_Comm comm
              p.c_str(), i.friction);
   // Shear dilation (docs/physics.md section 4): angle psi in degrees, optional slip limit.
   double psi = 0.0, slip_limit = 0.0;
-  PetscCall(getReal(p + "dilation_angle", &psi, nullptr));
+  PetscCall(getReal(PetscOptionsObject, p + "dilation_angle",
+                    "shear dilation angle psi [deg] of interface " + i.name + ", in [0, 90)", &psi,
+                    nullptr));
   PetscCheck(psi >= 0.0 && psi < 90.0, comm, PETSC_ERR_USER_INPUT,
              "%sdilation_angle = %g: expected a dilation angle in degrees, 0 <= psi < 90",
              p.c_str(), psi);
   i.dilation = std::tan(psi * M_PI / 180.0);
-  PetscCall(getReal(p + "dilation_limit", &slip_limit, &set));
+  PetscCall(getReal(PetscOptionsObject, p + "dilation_limit",
+                    "plastic slip [m] of interface " + i.name +
+                        " after which it stops dilating (optional; none: no limit)",
+                    &slip_limit, &set));
   if (set) {
     PetscCheck(slip_limit >= 0.0, comm, PETSC_ERR_USER_INPUT,
                "%sdilation_limit = %g: expected the plastic slip [m] after which the joint stops "
