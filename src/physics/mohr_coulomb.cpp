@@ -405,8 +405,11 @@ SkeletonResponse mohrCoulombResponse(const MohrCoulombParameters &p,
     for (int b = 0; b < 3; ++b) {
       if (a == b) continue;
       const double gap = x[a] - x[b];
-      spin[a][b] = std::fabs(gap) > 1e-9 * scale ? m.shear * (ret.y[a] - ret.y[b]) / gap
-                                                 : m.shear * (ret.dy_dx[a][a] - ret.dy_dx[a][b]);
+      spin[a][b] =
+          std::fabs(gap) > 1e-9 * scale
+              ? m.shear * (ret.y[a] - ret.y[b]) / gap
+              : 0.5 * m.shear *
+                    (ret.dy_dx[a][a] - ret.dy_dx[a][b] + ret.dy_dx[b][b] - ret.dy_dx[b][a]);
     }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
