@@ -196,6 +196,37 @@ bool tryActiveSet(const ElasticModuli &m, const Plane planes[], int n_planes, co
   return true;
 }
 
+/// True when the stress lies inside every yield plane by a clear margin, judged on its
+/// largest and smallest principal values from the trigonometric closed form. That form costs a
+/// fraction of the Jacobi rotations but loses about half the digits at repeated eigenvalues
+/// (errors up to ~1e-8 of the deviatoric stress), so the margin is 1e-6 of the stress scale;
+/// closer to the surface the full decomposition decides.
+bool clearlyInside(const MohrCoulombParameters &p, const double s[3][3])
+{
+  const double mean = (s[0][0] + s[1][1] + s[2][2]) / 3.0;
+  const double off = s[0][1] * s[0][1] + s[0][2] * s[0][2] + s[1][2] * s[1][2];
+  const double d0 = s[0][0] - mean, d1 = s[1][1] - mean, d2 = s[2][2] - mean;
+  const double radius = std::sqrt((d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * off) / 6.0);
+  double largest = mean, smallest = mean;
+  if (radius > 0.0) {
+    // Eigenvalues mean + 2 radius cos(angle + 2 pi k / 3), cos(3 angle) = det(dev / radius) / 2.
+    const double b00 = d0 / radius, b11 = d1 / radius, b22 = d2 / radius;
+    const double b01 = s[0][1] / radius, b02 = s[0][2] / radius, b12 = s[1][2] / radius;
+    const double det = b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) +
+                       b02 * (b01 * b12 - b11 * b02);
+    const double angle = std::acos(std::fmax(-1.0, std::fmin(1.0, 0.5 * det))) / 3.0;
+    largest = mean + 2.0 * radius * std::cos(angle);
+    smallest = mean + 2.0 * radius * std::cos(angle + 2.0 * kPi / 3.0);
+  }
+  const double margin =
+      1e-6 * (std::fabs(mean) + radius + p.cohesion + std::fmax(p.tension_cutoff, 0.0));
+  const double sin_phi = std::sin(p.friction_angle);
+  const double f = (1.0 + sin_phi) * largest - (1.0 - sin_phi) * smallest -
+                   2.0 * p.cohesion * std::cos(p.friction_angle);
+  if (f > -margin) return false;
+  return !tensionCutoffActive(p) || largest - p.tension_cutoff < -margin;
+}
+
 /// The return of the trial principal stresses x (descending) to the yield surface.
 PrincipalReturn principalReturn(const MohrCoulombParameters &p, const double x[3], bool &elastic)
 {
@@ -257,7 +288,8 @@ void elasticResponse(const ElasticModuli &m, const double initial_stress[3][3],
       r.stress[i][j] += initial_stress[i][j];
       for (int k = 0; k < 3; ++k)
         for (int l = 0; l < 3; ++l)
-          r.tangent[i][j][k][l] = elasticTangent(m, i, j, k, l);
+          r.tangent[i][j][k][l] = (i == j && k == l ? m.lambda : 0.0) +
+                                  m.shear * ((i == k && j == l) + (i == l && j == k));
     }
   r.state = YieldState::elastic;
   r.updated = committed;
@@ -291,7 +323,8 @@ void symmetricEigen(const double a[3][3], double values[3], double vectors[3][3]
       // The rotation that zeroes A[p][q]: t = tan of its angle, the smaller root of
       // t^2 + 2 theta t - 1 = 0.
       const double theta = (A[q][q] - A[p][p]) / (2.0 * A[p][q]);
-      const double t = (theta >= 0.0 ? 1.0 : -1.0) / (std::fabs(theta) + std::hypot(theta, 1.0));
+      const double t =
+          (theta >= 0.0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
       const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
       for (int k = 0; k < 3; ++k) {
         const double akp = A[k][p], akq = A[k][q];
@@ -359,6 +392,7 @@ SkeletonResponse mohrCoulombResponse(const MohrCoulombParameters &p,
 {
   SkeletonResponse r;
   elasticResponse(p.elastic, initial_stress, committed, strain, r);
+  if (clearlyInside(p, r.stress)) return r;
   double x[3], Q[3][3];
   symmetricEigen(r.stress, x, Q);
   bool elastic = false;
@@ -395,35 +429,46 @@ SkeletonResponse mohrCoulombResponse(const MohrCoulombParameters &p,
   // Tangent on the principal axes: d sigma_aa / d eps_ee = (dy/dx D)_ae, and the shear terms
   // d sigma_ab / d eps_ab = G (y_a - y_b) / (x_a - x_b) from the rotation of the axes; for
   // (nearly) equal trial stresses its limit dy_a/dx_a - dy_a/dx_b.
-  double PD[3][3], spin[3][3];
+  double PD[3][3];
   for (int a = 0; a < 3; ++a)
     for (int e = 0; e < 3; ++e)
       PD[a][e] = m.lambda * (ret.dy_dx[a][0] + ret.dy_dx[a][1] + ret.dy_dx[a][2]) +
                  2.0 * m.shear * ret.dy_dx[a][e];
-  const double scale = std::fmax(std::fabs(x[0]), std::fabs(x[2]));
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      if (a == b) continue;
-      const double gap = x[a] - x[b];
-      spin[a][b] =
-          std::fabs(gap) > 1e-9 * scale
-              ? m.shear * (ret.y[a] - ret.y[b]) / gap
-              : 0.5 * m.shear *
-                    (ret.dy_dx[a][a] - ret.dy_dx[a][b] + ret.dy_dx[b][b] - ret.dy_dx[b][a]);
+  // Dyads of the axes: diag[a] = n_a n_a, sym[ab] = n_a n_b + n_b n_a for the pairs a < b.
+  const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  double diag[3][3][3], sym[3][3][3], spin[3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      for (int a = 0; a < 3; ++a)
+        diag[a][i][j] = Q[i][a] * Q[j][a];
+      for (int n = 0; n < 3; ++n) {
+        const int a = pairs[n][0], b = pairs[n][1];
+        sym[n][i][j] = Q[i][a] * Q[j][b] + Q[i][b] * Q[j][a];
+      }
     }
+  const double scale = std::fmax(std::fabs(x[0]), std::fabs(x[2]));
+  for (int n = 0; n < 3; ++n) {
+    const int a = pairs[n][0], b = pairs[n][1];
+    const double gap = x[a] - x[b];
+    spin[n] = std::fabs(gap) > 1e-9 * scale
+                  ? m.shear * (ret.y[a] - ret.y[b]) / gap
+                  : 0.5 * m.shear *
+                        (ret.dy_dx[a][a] - ret.dy_dx[a][b] + ret.dy_dx[b][b] - ret.dy_dx[b][a]);
+  }
+  // T = sum_ae PD_ae n_a n_a n_e n_e + sum_(a<b) spin_ab sym_ab sym_ab.
+  double left[3][3][3]; // left[e] = sum_a PD_ae n_a n_a
+  for (int e = 0; e < 3; ++e)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        left[e][i][j] =
+            PD[0][e] * diag[0][i][j] + PD[1][e] * diag[1][i][j] + PD[2][e] * diag[2][i][j];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k)
         for (int l = 0; l < 3; ++l) {
           double t = 0.0;
-          for (int a = 0; a < 3; ++a) {
-            const double qa = Q[i][a] * Q[j][a];
-            for (int e = 0; e < 3; ++e)
-              t += PD[a][e] * qa * Q[k][e] * Q[l][e];
-            for (int b = 0; b < 3; ++b)
-              if (b != a)
-                t += spin[a][b] * Q[i][a] * Q[j][b] * (Q[k][a] * Q[l][b] + Q[k][b] * Q[l][a]);
-          }
+          for (int n = 0; n < 3; ++n)
+            t += left[n][i][j] * diag[n][k][l] + spin[n] * sym[n][i][j] * sym[n][k][l];
           r.tangent[i][j][k][l] = t;
         }
   return r;
