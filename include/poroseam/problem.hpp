@@ -89,10 +89,13 @@ public:
   PetscErrorCode restoreSkeletonHistory(const std::vector<double> &values);
   /// Some region's skeleton law has history (the same on every rank).
   bool hasSkeletonHistory() const { return any_skeleton_history_; }
-  /// Visits this rank's bulk cells whose law has history with the committed state of their
-  /// integration points: the mean equivalent plastic strain and the yield state (0 elastic;
-  /// else the largest state code among the points, see physics::YieldState).
-  void visitSkeletonCells(
+  /// Visits this rank's bulk cells whose law has history with the law's response at `local`
+  /// (with boundary values) from the committed history, as the assembly evaluates it: the mean
+  /// equivalent plastic strain of the cell's integration points and its yield state (0 when
+  /// every point is elastic, else the largest physics::YieldState code among them). Like the
+  /// interface outputs, call it before committing the state.
+  PetscErrorCode visitSkeletonCells(
+      Vec local,
       const std::function<void(PetscInt cell, double equivalent_plastic_strain, int state)> &f)
       const;
 
@@ -116,12 +119,12 @@ private:
     PetscInt cell;
     int region;
     int element;
-    double size;                ///< h for the stabilisation
+    double size;                 ///< h for the stabilisation
     size_t history = kNoHistory; ///< first of its points in skeleton_committed_
   };
   static constexpr size_t kNoHistory = (size_t)-1;
-  /// Numbers per point in a checkpoint: the history's doubles, then the yield state.
-  static constexpr size_t kSkeletonValues = sizeof(physics::SkeletonHistory) / sizeof(double) + 1;
+  /// Numbers per point in a checkpoint: the history's doubles.
+  static constexpr size_t kSkeletonValues = sizeof(physics::SkeletonHistory) / sizeof(double);
   struct LoadedFace {
     PetscInt face;
     int condition; ///< index in scene.conditions, or kWaterLoad
@@ -166,8 +169,7 @@ private:
   /// visit(cell index, responses of its points). Zero rates (mechanics only).
   PetscErrorCode skeletonResponses(
       Vec local,
-      const std::function<PetscErrorCode(size_t, const physics::SkeletonResponse *)> &visit)
-      const;
+      const std::function<PetscErrorCode(size_t, const physics::SkeletonResponse *)> &visit) const;
   /// The initial effective stress must lie inside the yield surface of every law with history:
   /// checked at setup (collective).
   PetscErrorCode checkInitialYield(MPI_Comm comm);
@@ -184,7 +186,6 @@ private:
   InterfaceAssembly interfaces_;
   std::vector<SkeletonLaw> laws_; ///< per region
   std::vector<physics::SkeletonHistory> skeleton_committed_;
-  std::vector<physics::YieldState> skeleton_state_; ///< at the last commit, per point
   bool any_skeleton_history_ = false;
   physics::GeostaticColumn column_; ///< hydrostatic pressure, geostatic stresses, water load
   double mass_balance_scale_ = 1.0;

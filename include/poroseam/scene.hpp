@@ -42,7 +42,10 @@ struct Region {
   /// Part of the ground column of the geostatic state (-region_<r>_ground); unset: porous
   /// regions are ground, elastic ones are structures without initial stress.
   std::optional<bool> ground;
-  bool porous() const { return model == MaterialModel::biot || model == MaterialModel::mohr_coulomb; }
+  bool porous() const
+  {
+    return model == MaterialModel::biot || model == MaterialModel::mohr_coulomb;
+  }
   bool inGround() const { return ground.value_or(porous()); }
 };
 
@@ -110,8 +113,8 @@ struct Scene {
   /// Boundaries the free water above the ground stands on (-water_load_boundaries): they carry
   /// its pressure rho_w g (water_level - z) for the whole run.
   std::vector<Boundary> water_load_boundaries;
-  double fluid_density = 1000.0;  ///< rho_w [kg/m3]
-  double fluid_viscosity = 1e-3;  ///< mu_w [Pa s]
+  double fluid_density = 1000.0; ///< rho_w [kg/m3]
+  double fluid_viscosity = 1e-3; ///< mu_w [Pa s]
   double stabilization_factor = 0.25;
 
   std::string output_dir = "output";

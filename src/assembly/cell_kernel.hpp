@@ -201,13 +201,13 @@ struct CellKernel {
         // variation[k] : C : variation[l] is symmetric in k, l (C has major symmetry): the
         // upper triangle, mirrored.
         for (int k = 0; k < nu; ++k) {
-        J[k * S + k] += w * contract(stress_of[k], k);
-        for (int l = k + 1; l < nu; ++l) {
-          const double v = w * contract(stress_of[l], k);
-          J[k * S + l] += v;
-          J[l * S + k] += v;
+          J[k * S + k] += w * contract(stress_of[k], k);
+          for (int l = k + 1; l < nu; ++l) {
+            const double v = w * contract(stress_of[l], k);
+            J[k * S + l] += v;
+            J[l * S + k] += v;
+          }
         }
-      }
       if (!with_pressure) continue;
       for (int a = 0; a < nv; ++a)
         for (int b = 0; b < nv; ++b) {

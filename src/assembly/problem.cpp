@@ -64,8 +64,8 @@ void Problem::initialStress(const double x[], int region, double stress[3][3]) c
   const Region &r = scene_->regions[region];
   // Structures (regions outside the ground column) start unstressed: their weight is a load.
   if (!scene_->geostatic || !r.inGround()) return;
-  physics::geostaticStress(column_, x[dim_ - 1], r.k0, r.porous() ? r.biot_coefficient : 0.0,
-                           dim_, stress);
+  physics::geostaticStress(column_, x[dim_ - 1], r.k0, r.porous() ? r.biot_coefficient : 0.0, dim_,
+                           stress);
 }
 
 void Problem::initialTotalStress(const double x[], int region, double stress[3][3]) const
@@ -264,14 +264,13 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   faces_.clear();
   constrained_.clear();
   skeleton_committed_.clear();
-  skeleton_state_.clear();
   laws_.clear();
   for (const Region &r : scene.regions)
     laws_.push_back(skeletonLawOf(r));
-  any_skeleton_history_ = std::any_of(laws_.begin(), laws_.end(),
-                                      [](const SkeletonLaw &l) { return l.hasHistory(); });
-  column_ = physics::GeostaticColumn{scene.surface_elevation, scene.water_level,
-                                     scene.fluid_density, scene.gravity, {}};
+  any_skeleton_history_ =
+      std::any_of(laws_.begin(), laws_.end(), [](const SkeletonLaw &l) { return l.hasHistory(); });
+  column_ = physics::GeostaticColumn{
+      scene.surface_elevation, scene.water_level, scene.fluid_density, scene.gravity, {}};
   // Vertical extent of each region's cells on this rank (for the geostatic column).
   std::vector<double> bottom(scene.regions.size(), 1e300), top(scene.regions.size(), -1e300);
 
@@ -321,7 +320,6 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     if (laws_[region].hasHistory()) {
       bc.history = skeleton_committed_.size();
       skeleton_committed_.resize(skeleton_committed_.size() + e.num_quadrature);
-      skeleton_state_.resize(skeleton_committed_.size(), physics::YieldState::elastic);
     }
     cells_.push_back(bc);
   }
@@ -544,8 +542,7 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
 
 void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
                         const PetscScalar *coords, double mass_scale, double shift,
-                        bool with_jacobian, CellWork &w,
-                        physics::SkeletonResponse *responses) const
+                        bool with_jacobian, CellWork &w, physics::SkeletonResponse *responses) const
 {
   const BulkCell &cell = cells_[i];
   CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);

@@ -19,13 +19,15 @@
 
 namespace poroseam {
 
+// The history is checkpointed as the doubles it is made of (a field added to it is carried
+// along without change here).
 static_assert(std::is_trivially_copyable_v<physics::SkeletonHistory> &&
                   sizeof(physics::SkeletonHistory) % sizeof(double) == 0,
               "SkeletonHistory must be plain doubles to be checkpointed as numbers");
 
 PetscErrorCode Problem::skeletonResponses(
-    Vec local, const std::function<PetscErrorCode(size_t, const physics::SkeletonResponse *)> &visit)
-    const
+    Vec local,
+    const std::function<PetscErrorCode(size_t, const physics::SkeletonResponse *)> &visit) const
 {
   Vec coords;
   const PetscScalar *ua, *ca;
@@ -54,59 +56,53 @@ PetscErrorCode Problem::commit(Vec local)
   if (skeleton_committed_.empty()) PetscFunctionReturn(0);
   // Every point's update from the committed history, then all at once.
   std::vector<physics::SkeletonHistory> updated = skeleton_committed_;
-  std::vector<physics::YieldState> state = skeleton_state_;
   PetscCall(skeletonResponses(local, [&](size_t i, const physics::SkeletonResponse *r) {
     const size_t first = cells_[i].history;
-    for (int q = 0; q < elements_[cells_[i].element].num_quadrature; ++q) {
+    for (int q = 0; q < elements_[cells_[i].element].num_quadrature; ++q)
       updated[first + q] = r[q].updated;
-      state[first + q] = r[q].state;
-    }
     return PetscErrorCode(0);
   }));
   skeleton_committed_.swap(updated);
-  skeleton_state_.swap(state);
   PetscFunctionReturn(0);
 }
 
 std::vector<double> Problem::committedSkeletonHistory() const
 {
-  constexpr size_t n = kSkeletonValues - 1;
   std::vector<double> values(skeleton_committed_.size() * kSkeletonValues);
-  for (size_t p = 0; p < skeleton_committed_.size(); ++p) {
-    std::memcpy(&values[p * kSkeletonValues], &skeleton_committed_[p], n * sizeof(double));
-    values[p * kSkeletonValues + n] = (double)skeleton_state_[p];
-  }
+  if (!values.empty())
+    std::memcpy(values.data(), static_cast<const void *>(skeleton_committed_.data()),
+                values.size() * sizeof(double));
   return values;
 }
 
 PetscErrorCode Problem::restoreSkeletonHistory(const std::vector<double> &values)
 {
-  constexpr size_t n = kSkeletonValues - 1;
   PetscFunctionBeginUser;
   PetscCheck(values.size() == skeletonHistoryValues(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "skeleton history of %zu values for %zu integration points", values.size(),
              skeleton_committed_.size());
-  for (size_t p = 0; p < skeleton_committed_.size(); ++p) {
-    std::memcpy(static_cast<void *>(&skeleton_committed_[p]), &values[p * kSkeletonValues], n * sizeof(double));
-    skeleton_state_[p] = (physics::YieldState)(int)values[p * kSkeletonValues + n];
-  }
+  if (!values.empty())
+    std::memcpy(static_cast<void *>(skeleton_committed_.data()), values.data(),
+                values.size() * sizeof(double));
   PetscFunctionReturn(0);
 }
 
-void Problem::visitSkeletonCells(
-    const std::function<void(PetscInt, double, int)> &f) const
+PetscErrorCode
+Problem::visitSkeletonCells(Vec local, const std::function<void(PetscInt, double, int)> &f) const
 {
-  for (const BulkCell &cell : cells_) {
-    if (cell.history == kNoHistory) continue;
-    const int nq = elements_[cell.element].num_quadrature;
+  PetscFunctionBeginUser;
+  PetscCall(skeletonResponses(local, [&](size_t i, const physics::SkeletonResponse *r) {
+    const int nq = elements_[cells_[i].element].num_quadrature;
     double eqps = 0.0;
     int state = 0;
     for (int q = 0; q < nq; ++q) {
-      eqps += skeleton_committed_[cell.history + q].equivalent_plastic_strain;
-      state = std::max(state, (int)skeleton_state_[cell.history + q]);
+      eqps += r[q].updated.equivalent_plastic_strain;
+      state = std::max(state, (int)r[q].state);
     }
-    f(cell.cell, eqps / nq, state);
-  }
+    f(cells_[i].cell, eqps / nq, state);
+    return PetscErrorCode(0);
+  }));
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode Problem::checkInitialYield(MPI_Comm comm)
@@ -130,8 +126,8 @@ PetscErrorCode Problem::checkInitialYield(MPI_Comm comm)
       msg << "region '" << region.name << "': the initial effective stress lies outside the "
           << "yield surface of its material (yield state " << (int)r[q].state << ") near ("
           << centroid[0] << ", " << centroid[1] << (dim_ == 3 ? ", " : "")
-          << (dim_ == 3 ? std::to_string(centroid[2]) : std::string()) << "), where its diagonal is "
-          << s0[0][0] << ", " << s0[1][1] << ", " << s0[2][2]
+          << (dim_ == 3 ? std::to_string(centroid[2]) : std::string())
+          << "), where its diagonal is " << s0[0][0] << ", " << s0[1][1] << ", " << s0[2][2]
           << " Pa. The run would start out of equilibrium: choose -region_" << region.name
           << "_K0 between the active and passive earth pressure coefficients of its strength, "
              "or a larger cohesion";

@@ -220,8 +220,8 @@ PetscErrorCode readRegion(MPI_Comm comm, Region &r, bool gravity, bool drained)
   if (r.model == MaterialModel::mohr_coulomb) {
     // Strength of the skeleton (effective stress): c, phi, psi (non-associated when psi < phi)
     // and the optional tension cut-off on the largest principal effective stress.
-    PetscCall(getRequiredReal(comm, p + "cohesion", "cohesion c [Pa] of region " + r.name,
-                              &r.cohesion));
+    PetscCall(
+        getRequiredReal(comm, p + "cohesion", "cohesion c [Pa] of region " + r.name, &r.cohesion));
     PetscCall(getRequiredReal(comm, p + "friction_angle",
                               "friction angle phi [degrees] of region " + r.name,
                               &r.friction_angle));
@@ -231,8 +231,8 @@ PetscErrorCode readRegion(MPI_Comm comm, Region &r, bool gravity, bool drained)
     PetscCheck(r.cohesion >= 0.0, comm, PETSC_ERR_USER_INPUT,
                "%scohesion = %g: the cohesion [Pa] must be >= 0", p.c_str(), r.cohesion);
     PetscCheck(r.friction_angle >= 0.0 && r.friction_angle < 90.0, comm, PETSC_ERR_USER_INPUT,
-               "%sfriction_angle = %g: the friction angle [degrees] must lie in [0, 90)",
-               p.c_str(), r.friction_angle);
+               "%sfriction_angle = %g: the friction angle [degrees] must lie in [0, 90)", p.c_str(),
+               r.friction_angle);
     PetscCheck(r.cohesion > 0.0 || r.friction_angle > 0.0, comm, PETSC_ERR_USER_INPUT,
                "%scohesion = 0 and %sfriction_angle = 0: a soil without cohesion and friction "
                "has no strength; give c > 0 or phi > 0",
@@ -369,10 +369,9 @@ PetscErrorCode readBoundary(MPI_Comm comm, const Scene &scene, const Boundary &b
                  "%sflux: the scene has no pressure unknowns (drained, or no biot region)",
                  p.c_str());
       // A prescribed pressure fixes the water at the boundary: a flux there would be ignored.
-      const bool pressure =
-          std::any_of(out.begin(), out.end(), [&](const BoundaryCondition &c) {
-            return c.boundary == b.name && c.kind == BcKind::pressure;
-          });
+      const bool pressure = std::any_of(out.begin(), out.end(), [&](const BoundaryCondition &c) {
+        return c.boundary == b.name && c.kind == BcKind::pressure;
+      });
       PetscCheck(!pressure, comm, PETSC_ERR_USER_INPUT,
                  "%sflux and %sp on the same boundary '%s': a prescribed pressure leaves no "
                  "flux to prescribe; give one of them (or split the boundary in the mesh)",
@@ -602,8 +601,8 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
     for (const auto &name : names_w) {
       Boundary b;
       b.name = name;
-      PetscCall(findPhysical(comm, names, dim - 1, name, "-water_load_boundaries", "boundary",
-                             &b.tag));
+      PetscCall(
+          findPhysical(comm, names, dim - 1, name, "-water_load_boundaries", "boundary", &b.tag));
       for (const auto &other : scene.water_load_boundaries)
         PetscCheck(other.name != name, comm, PETSC_ERR_USER_INPUT,
                    "-water_load_boundaries: '%s' is listed twice; list each boundary once",

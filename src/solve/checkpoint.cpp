@@ -38,8 +38,8 @@ PetscErrorCode layoutOf(Run &run, Vec X, double layout[3])
   PetscCall(DMGetCoordinatesLocal(run.dm, &coordinates));
   PetscCall(VecNorm(coordinates, NORM_1, &norm));
   layout[0] = (double)n;
-  layout[1] = (double)(run.problem.interfaces().historyValues() +
-                       run.problem.skeletonHistoryValues());
+  layout[1] =
+      (double)(run.problem.interfaces().historyValues() + run.problem.skeletonHistoryValues());
   layout[2] = norm;
   PetscFunctionReturn(0);
 }
@@ -145,8 +145,8 @@ PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
       writeValues(viewer, comm, "interface_history", history.data(), (PetscInt)history.size()));
   if (run.problem.hasSkeletonHistory()) { // scenes without plastic regions write none
     const std::vector<double> skeleton = run.problem.committedSkeletonHistory();
-    PetscCall(writeValues(viewer, comm, "skeleton_history", skeleton.data(),
-                          (PetscInt)skeleton.size()));
+    PetscCall(
+        writeValues(viewer, comm, "skeleton_history", skeleton.data(), (PetscInt)skeleton.size()));
   }
   PetscCall(writeValues(viewer, comm, "output_times", times.data(),
                         rank == 0 ? (PetscInt)times.size() : 0));
