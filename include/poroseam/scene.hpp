@@ -19,7 +19,9 @@ struct PhysicalName {
   std::string name;
 };
 
-enum class MaterialModel { elastic, biot };
+/// elastic: linear elastic solid; biot: porous, linear elastic skeleton; mohr_coulomb: porous
+/// like biot, elastoplastic (Mohr-Coulomb) skeleton.
+enum class MaterialModel { elastic, biot, mohr_coulomb };
 
 struct Region {
   std::string name;
@@ -33,10 +35,14 @@ struct Region {
   double biot_coefficient = 1.0; ///< alpha [-] (biot)
   double storage = 0.0;          ///< 1/M [1/Pa] (biot)
   double k0 = 1.0;               ///< earth pressure coefficient at rest (geostatic state)
+  double cohesion = 0.0;         ///< c [Pa] (mohr_coulomb)
+  double friction_angle = 0.0;   ///< phi [degrees] (mohr_coulomb)
+  double dilation_angle = 0.0;   ///< psi [degrees] (mohr_coulomb)
+  double tension_cutoff = -1.0;  ///< sigma_t [Pa] (mohr_coulomb); < 0: none, the apex c / tan(phi)
   /// Part of the ground column of the geostatic state (-region_<r>_ground); unset: porous
   /// regions are ground, elastic ones are structures without initial stress.
   std::optional<bool> ground;
-  bool porous() const { return model == MaterialModel::biot; }
+  bool porous() const { return model == MaterialModel::biot || model == MaterialModel::mohr_coulomb; }
   bool inGround() const { return ground.value_or(porous()); }
 };
 
