@@ -12,3 +12,6 @@ poroseam_scene_test(plasticity.cavity_expansion "plasticity;verification;axisymm
                     plasticity/cavity.py)
 poroseam_scene_test(plasticity.cavity_expansion_np2 "plasticity;verification;axisymmetric;mpi"
                     plasticity/cavity.py --ranks 2)
+# The closed forms themselves against independent results (Prandtl's numbers, first yield,
+# the incompressible Tresca cavity c (1 + ln(2 G u / (c a))), the phi -> 0 limit).
+poroseam_scene_test(plasticity.closed_forms "plasticity;verification" plasticity/closed_forms.py)
