@@ -260,7 +260,8 @@ PrincipalReturn principalReturn(const MohrCoulombParameters &p, const double x[3
   // reach (e.g. isotropic tension with psi = 0: no volumetric plastic strain). The stress goes
   // to that corner, as in de Souza Neto et al.'s apex return: the apex c / tan(phi) of the
   // Mohr-Coulomb cone, or the corner of the tension cut-off. The stress no longer depends on
-  // the strain there.
+  // the strain there. (Tresca without cut-off, which has no apex, never gets here: the faces and
+  // edges of its prism reach every point, with deviatoric flow from any trial stress.)
   const bool cutoff = tensionCutoffActive(p);
   const double corner = cutoff
                             ? p.tension_cutoff
