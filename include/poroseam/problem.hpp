@@ -1,14 +1,19 @@
 // The discrete problem on a distributed mesh: element loops over DMPlex closures for the
-// residual and Jacobian of quasi-static Biot consolidation with elastic regions, boundary
-// values, and the initial (geostatic) state. Point laws come from physics/.
+// residual and Jacobian of quasi-static Biot consolidation, boundary values, the initial
+// (geostatic) state, and the integration-point history of the regions whose skeleton law has
+// one (committed after accepted steps only). Point laws come from physics/, through the law
+// table of skeleton_law.hpp for the skeleton.
 #pragma once
 
+#include "poroseam/cell_fields.hpp"
 #include "poroseam/closure_cache.hpp"
 #include "poroseam/geostatic.hpp"
 #include "poroseam/interface_assembly.hpp"
 #include "poroseam/log_events.hpp"
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
+#include "poroseam/skeleton_law.hpp"
+#include <functional>
 #include <map>
 #include <petscdmplex.h>
 #include <vector>
@@ -64,17 +69,43 @@ public:
   PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate,
                           const ResidualMode &mode, Mat J) const;
 
+  /// Per-cell output of the state `local` (a local vector with boundary values inserted):
+  /// effective_stress and total_stress [Pa] (full 3 x 3, tension positive) and strain [-],
+  /// each averaged over the cell's integration points (src/assembly/cell_stress.hpp).
+  PetscErrorCode cellFields(Vec local, CellFields &out) const;
+  /// The bulk cells of this rank and the index in scene().regions of each.
+  void cellRegions(std::vector<PetscInt> &cells, std::vector<int> &regions) const;
+
   /// Profiling: residual and Jacobian, bulk and interface terms, become -log_view events.
   void setLogEvents(const LogEvents &events) { events_ = events; }
 
-  /// Commits integration-point history (interfaces) of a converged state.
-  PetscErrorCode commit(Vec local) { return interfaces_.commit(local); }
+  /// Commits integration-point history (interfaces, skeleton laws with history) of a
+  /// converged state `local` (with its boundary values): only accepted steps are committed, so
+  /// a failed step leaves the history of the last accepted one.
+  PetscErrorCode commit(Vec local);
   const InterfaceAssembly &interfaces() const { return interfaces_; }
-  /// Restores committed integration-point history from a checkpoint.
+  /// Restores committed interface history from a checkpoint.
   PetscErrorCode restoreHistory(const std::vector<double> &values)
   {
     return interfaces_.restoreHistory(values);
   }
+  /// The committed skeleton history of this rank's bulk integration points as plain numbers
+  /// (for checkpoints, in this rank's cell order), its size, and back. Empty when no region's
+  /// law has history.
+  std::vector<double> committedSkeletonHistory() const;
+  size_t skeletonHistoryValues() const { return skeleton_committed_.size() * kSkeletonValues; }
+  PetscErrorCode restoreSkeletonHistory(const std::vector<double> &values);
+  /// Some region's skeleton law has history (the same on every rank).
+  bool hasSkeletonHistory() const { return any_skeleton_history_; }
+  /// Visits this rank's bulk cells whose law has history with the law's response at `local`
+  /// (with boundary values) from the committed history, as the assembly evaluates it: the mean
+  /// equivalent plastic strain of the cell's integration points and its yield state (0 when
+  /// every point is elastic, else the largest physics::YieldState code among them). Like the
+  /// interface outputs, call it before committing the state.
+  PetscErrorCode visitSkeletonCells(
+      Vec local,
+      const std::function<void(PetscInt cell, double equivalent_plastic_strain, int state)> &f)
+      const;
 
   /// Factor S [Pa/m] that turns the mass balance times dt (a volume) into a force: the largest
   /// constrained modulus of the porous regions over their mean cell size. The solver
@@ -96,8 +127,12 @@ private:
     PetscInt cell;
     int region;
     int element;
-    double size; ///< h for the stabilisation
+    double size;                 ///< h for the stabilisation
+    size_t history = kNoHistory; ///< first of its points in skeleton_committed_
   };
+  static constexpr size_t kNoHistory = (size_t)-1;
+  /// Numbers per point in a checkpoint: the history's doubles.
+  static constexpr size_t kSkeletonValues = sizeof(physics::SkeletonHistory) / sizeof(double);
   struct LoadedFace {
     PetscInt face;
     int condition; ///< index in scene.conditions, or kWaterLoad
@@ -133,8 +168,19 @@ private:
   /// Bulk terms of cell i, its closure read through closures_ from the local arrays of the
   /// solution u, its rate u_t and the coordinates: w.F, and with `with_jacobian` w.K
   /// (d/du + shift d/du_t). Shared by residual and Jacobian so both evaluate the same cell.
+  /// `responses` (optional, for cells whose law has history): the law's response at each
+  /// integration point.
   void cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t, const PetscScalar *coords,
-                 double mass_scale, double shift, bool with_jacobian, CellWork &w) const;
+                 double mass_scale, double shift, bool with_jacobian, CellWork &w,
+                 physics::SkeletonResponse *responses = nullptr) const;
+  /// The law's responses at the integration points of every cell with history at `local`:
+  /// visit(cell index, responses of its points). Zero rates (mechanics only).
+  PetscErrorCode skeletonResponses(
+      Vec local,
+      const std::function<PetscErrorCode(size_t, const physics::SkeletonResponse *)> &visit) const;
+  /// The initial effective stress must lie inside the yield surface of every law with history:
+  /// checked at setup (collective).
+  PetscErrorCode checkInitialYield(MPI_Comm comm);
 
   DM dm_ = nullptr;
   const Scene *scene_ = nullptr;
@@ -146,6 +192,9 @@ private:
   std::vector<LoadedFace> faces_;
   std::vector<ConstrainedDof> constrained_;
   InterfaceAssembly interfaces_;
+  std::vector<SkeletonLaw> laws_; ///< per region
+  std::vector<physics::SkeletonHistory> skeleton_committed_;
+  bool any_skeleton_history_ = false;
   physics::GeostaticColumn column_; ///< hydrostatic pressure, geostatic stresses, water load
   double mass_balance_scale_ = 1.0;
   LogEvents events_;

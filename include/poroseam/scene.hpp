@@ -20,7 +20,9 @@ struct PhysicalName {
   std::string name;
 };
 
-enum class MaterialModel { elastic, biot };
+/// elastic: linear elastic solid; biot: porous, linear elastic skeleton; mohr_coulomb: porous
+/// like biot, elastoplastic (Mohr-Coulomb) skeleton.
+enum class MaterialModel { elastic, biot, mohr_coulomb };
 
 struct Region {
   std::string name;
@@ -34,10 +36,17 @@ struct Region {
   double biot_coefficient = 1.0; ///< alpha [-] (biot)
   double storage = 0.0;          ///< 1/M [1/Pa] (biot)
   double k0 = 1.0;               ///< earth pressure coefficient at rest (geostatic state)
+  double cohesion = 0.0;         ///< c [Pa] (mohr_coulomb)
+  double friction_angle = 0.0;   ///< phi [degrees] (mohr_coulomb)
+  double dilation_angle = 0.0;   ///< psi [degrees] (mohr_coulomb)
+  double tension_cutoff = -1.0;  ///< sigma_t [Pa] (mohr_coulomb); < 0: none, the apex c / tan(phi)
   /// Part of the ground column of the geostatic state (-region_<r>_ground); unset: porous
   /// regions are ground, elastic ones are structures without initial stress.
   std::optional<bool> ground;
-  bool porous() const { return model == MaterialModel::biot; }
+  bool porous() const
+  {
+    return model == MaterialModel::biot || model == MaterialModel::mohr_coulomb;
+  }
   bool inGround() const { return ground.value_or(porous()); }
 };
 
@@ -108,8 +117,8 @@ struct Scene {
   /// Boundaries the free water above the ground stands on (-water_load_boundaries): they carry
   /// its pressure rho_w g (water_level - z) for the whole run.
   std::vector<Boundary> water_load_boundaries;
-  double fluid_density = 1000.0;  ///< rho_w [kg/m3]
-  double fluid_viscosity = 1e-3;  ///< mu_w [Pa s]
+  double fluid_density = 1000.0; ///< rho_w [kg/m3]
+  double fluid_viscosity = 1e-3; ///< mu_w [Pa s]
   double stabilization_factor = 0.25;
 
   std::string output_dir = "output";

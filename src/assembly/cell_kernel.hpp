@@ -8,7 +8,10 @@
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
 
+#include "poroseam/skeleton_law.hpp"
+
 #include <cmath>
+#include <type_traits>
 
 namespace poroseam {
 
@@ -19,6 +22,9 @@ struct CellMaterial {
   double density = 0.0; ///< rho_sat for porous regions, rho_s otherwise
   bool porous = false;  ///< region is porous
   double stabilization = 0.0;
+  /// The skeleton law when it is not linear elastic (has history), else nullptr: the kernel
+  /// then takes its linear path with `moduli`.
+  const SkeletonLaw *law = nullptr;
 };
 
 /// Residual and (optionally) Jacobian of one bulk cell, from its closure values. Layout of
@@ -26,7 +32,9 @@ struct CellMaterial {
 /// pressures (np = nv in porous regions). The kernel reads like the weak form:
 ///   R_u = int (sigma'_0 + C:eps(u) - alpha p I) : grad v - rho g . v
 ///   R_p = s int psi (alpha div u_t + p_t/M) - grad psi . q + beta grad psi . grad p_t
-/// with q = -(k/mu_w)(grad p - rho_w g) and s the mass scale.
+/// with q = -(k/mu_w)(grad p - rho_w g) and s the mass scale. With a skeleton law that has
+/// history (m.law), sigma'_0 + C:eps is the law's sigma'(eps; committed history) and C its
+/// consistent tangent, at every integration point.
 struct CellKernel {
   const ReferenceElement &e;
   int dim;
@@ -35,6 +43,11 @@ struct CellKernel {
   double mass_scale;
   double gravity[3];
   bool axisymmetric = false; // x = r, y = z: hoop strain u_r / r, weights 2 pi r
+  /// With m.law: the committed history of the cell's integration points (one per point).
+  const physics::SkeletonHistory *history = nullptr;
+  /// With m.law and non-null: receives the law's response at every integration point (for
+  /// committing the history and for outputs).
+  physics::SkeletonResponse *responses = nullptr;
 
   template <class InitialStress, class InitialPressure>
   void operator()(const double *coords, const double *x, const double *xdot, int closure_size,
@@ -44,15 +57,24 @@ struct CellKernel {
     // The space dimension as a compile-time constant: the loops over components unroll and
     // k / dim, k % dim become cheap (measured on the 3D caisson: the Jacobian kernel 259k -> 142k
     // instructions per hexahedron).
-    if (dim == 3)
-      evaluate<3>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
+    // The law's path is a separate instantiation, so the linear one is the same code as
+    // without laws.
+    if (m.law) {
+      if (dim == 3)
+        evaluate<3, true>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
+      else if (dim == 2)
+        evaluate<2, true>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
+      else
+        evaluate<1, true>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
+    } else if (dim == 3)
+      evaluate<3, false>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
     else if (dim == 2)
-      evaluate<2>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
+      evaluate<2, false>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
     else
-      evaluate<1>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
+      evaluate<1, false>(coords, x, xdot, closure_size, stress0, pressure0, F, shift, J);
   }
 
-  template <int D, class InitialStress, class InitialPressure>
+  template <int D, bool WithLaw, class InitialStress, class InitialPressure>
   void evaluate(const double *coords, const double *x, const double *xdot, int closure_size,
                 InitialStress &stress0, InitialPressure &pressure0, double *F, double shift,
                 double *J) const
@@ -63,6 +85,8 @@ struct CellKernel {
     // sym(e_i (x) grad phi_a), plus the hoop strain phi_a / r for radial dofs when
     // axisymmetric (tensor index 2 is then the hoop direction, out of plane otherwise).
     double variation[8 * 3][3][3], stress_of[8 * 3][3][3];
+    // The law's response at the current point (a placeholder on the linear path).
+    std::conditional_t<WithLaw, physics::SkeletonResponse, char> law_response;
     for (int q = 0; q < e.num_quadrature; ++q) {
       PointGeometry g;
       mapQuadraturePoint(e, coords, q, g);
@@ -80,7 +104,7 @@ struct CellKernel {
             de[j][i] += 0.5 * dphi[a * dim + j];
           }
           if (axisymmetric && i == 0) de[2][2] = phi[a] / r;
-          physics::elasticStress(m.moduli, de, stress_of[a * dim + i]);
+          if constexpr (!WithLaw) physics::elasticStress(m.moduli, de, stress_of[a * dim + i]);
         }
       // Only row and column i of variation[a * dim + i] are non-zero (plus the hoop entry), so
       // for a symmetric s, s : variation = grad phi_a . s e_i (+ s_hoop phi_a / r): 3 products
@@ -103,9 +127,20 @@ struct CellKernel {
         for (int m1 = 0; m1 < 3; ++m1)
           for (int m2 = 0; m2 < 3; ++m2)
             eps[m1][m2] += x[k] * variation[k][m1][m2];
-      physics::elasticStress(m.moduli, eps, sigma);
       double s0[3][3];
       stress0(g.x, s0);
+      const double(*tangent)[3][3][3] = nullptr; // the law's d sigma' / d eps
+      if constexpr (WithLaw) {
+        law_response = m.law->response(s0, history[q], eps);
+        if (responses) responses[q] = law_response;
+        tangent = law_response.tangent;
+        // sigma + s0 below is the law's stress, which includes the initial stress.
+        for (int m1 = 0; m1 < 3; ++m1)
+          for (int m2 = 0; m2 < 3; ++m2)
+            sigma[m1][m2] = law_response.stress[m1][m2] - s0[m1][m2];
+      } else {
+        physics::elasticStress(m.moduli, eps, sigma);
+      }
       double p = 0.0, pdot = 0.0, grad_p[3] = {0, 0, 0}, grad_pdot[3] = {0, 0, 0}, div_udot = 0.0;
       if (with_pressure) {
         for (int a = 0; a < nv; ++a) {
@@ -143,16 +178,36 @@ struct CellKernel {
       }
       if (!J) continue;
       const int S = closure_size;
-      // variation[k] : C : variation[l] is symmetric in k, l (C has major symmetry): the upper
-      // triangle, mirrored.
-      for (int k = 0; k < nu; ++k) {
-        J[k * S + k] += w * contract(stress_of[k], k);
-        for (int l = k + 1; l < nu; ++l) {
-          const double v = w * contract(stress_of[l], k);
-          J[k * S + l] += v;
-          J[l * S + k] += v;
+      if constexpr (WithLaw) {
+        // stress_of[l] = C_t : variation[l]. C_t has the minor symmetries, so for the dof
+        // (b, j) it is sum_n C_t[.][.][j][n] dphi_b,n (+ C_t[.][.][2][2] phi_b / r, hoop).
+        // C_t may lack major symmetry (non-associated flow): every (k, l), no mirroring.
+        for (int b = 0; b < nv; ++b)
+          for (int j = 0; j < dim; ++j) {
+            double(&ds)[3][3] = stress_of[b * dim + j];
+            for (int m1 = 0; m1 < 3; ++m1)
+              for (int m2 = 0; m2 < 3; ++m2) {
+                double v = 0.0;
+                for (int n = 0; n < dim; ++n)
+                  v += tangent[m1][m2][j][n] * dphi[b * dim + n];
+                if (j == 0) v += tangent[m1][m2][2][2] * hoop[b];
+                ds[m1][m2] = v;
+              }
+          }
+        for (int k = 0; k < nu; ++k)
+          for (int l = 0; l < nu; ++l)
+            J[k * S + l] += w * contract(stress_of[l], k);
+      } else
+        // variation[k] : C : variation[l] is symmetric in k, l (C has major symmetry): the
+        // upper triangle, mirrored.
+        for (int k = 0; k < nu; ++k) {
+          J[k * S + k] += w * contract(stress_of[k], k);
+          for (int l = k + 1; l < nu; ++l) {
+            const double v = w * contract(stress_of[l], k);
+            J[k * S + l] += v;
+            J[l * S + k] += v;
+          }
         }
-      }
       if (!with_pressure) continue;
       for (int a = 0; a < nv; ++a)
         for (int b = 0; b < nv; ++b) {

@@ -64,8 +64,8 @@ void Problem::initialStress(const double x[], int region, double stress[3][3]) c
   const Region &r = scene_->regions[region];
   // Structures (regions outside the ground column) start unstressed: their weight is a load.
   if (!scene_->geostatic || !r.inGround()) return;
-  physics::geostaticStress(column_, x[dim_ - 1], r.k0, r.porous() ? r.biot_coefficient : 0.0,
-                           dim_, stress);
+  physics::geostaticStress(column_, x[dim_ - 1], r.k0, r.porous() ? r.biot_coefficient : 0.0, dim_,
+                           stress);
 }
 
 void Problem::initialTotalStress(const double x[], int region, double stress[3][3]) const
@@ -263,8 +263,14 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   cells_.clear();
   faces_.clear();
   constrained_.clear();
-  column_ = physics::GeostaticColumn{scene.surface_elevation, scene.water_level,
-                                     scene.fluid_density, scene.gravity, {}};
+  skeleton_committed_.clear();
+  laws_.clear();
+  for (const Region &r : scene.regions)
+    laws_.push_back(skeletonLawOf(r));
+  any_skeleton_history_ =
+      std::any_of(laws_.begin(), laws_.end(), [](const SkeletonLaw &l) { return l.hasHistory(); });
+  column_ = physics::GeostaticColumn{
+      scene.surface_elevation, scene.water_level, scene.fluid_density, scene.gravity, {}};
   // Vertical extent of each region's cells on this rank (for the geostatic column).
   std::vector<double> bottom(scene.regions.size(), 1e300), top(scene.regions.size(), -1e300);
 
@@ -309,6 +315,12 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     }
     PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
     bc.size = cellSize(e, volume);
+    // Integration-point history only for laws that have one: a scene without them
+    // allocates nothing.
+    if (laws_[region].hasHistory()) {
+      bc.history = skeleton_committed_.size();
+      skeleton_committed_.resize(skeleton_committed_.size() + e.num_quadrature);
+    }
     cells_.push_back(bc);
   }
   if (scene.axisymmetric && error.empty()) {
@@ -335,6 +347,7 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
       points.push_back(cell.cell);
     PetscCall(closures_.setup(dm, points));
   }
+  if (any_skeleton_history_) PetscCall(checkInitialYield(comm));
   {
     double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
     // Porous regions set the scale; with none (interface flow between solid bodies), all do.
@@ -529,10 +542,12 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
 
 void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
                         const PetscScalar *coords, double mass_scale, double shift,
-                        bool with_jacobian, CellWork &w) const
+                        bool with_jacobian, CellWork &w, physics::SkeletonResponse *responses) const
 {
   const BulkCell &cell = cells_[i];
-  const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
+  CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
+  const bool history = cell.history != kNoHistory;
+  if (history) m.law = &laws_[cell.region];
   const int n = closures_.closureSize(i), nc = closures_.coordinateSize(i);
   w.x.resize(n), w.xdot.resize(n), w.xc.resize(nc);
   gatherClosure(u, closures_.local(i), n, w.x.data());
@@ -545,6 +560,10 @@ void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
       scene_->axisymmetric};
   for (int d = 0; d < dim_; ++d)
     kernel.gravity[d] = gravityVector(d);
+  if (history) {
+    kernel.history = &skeleton_committed_[cell.history];
+    kernel.responses = responses;
+  }
   kernel(
       w.xc.data(), w.x.data(), w.xdot.data(), n,
       [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },

@@ -46,8 +46,20 @@ const char *const kPetscPrefixes[] = {"ts_",         "snes_",  "ksp_",   "pc_", 
                                       "petsc",       "viewer", "draw",   "is_",     "sf_",  "tao_",
                                       "fieldsplit_", "help",   "info",   "version", "mpi"};
 
-const char *const kRegionKeys[] = {"material", "E",        "nu",           "rho_s",      "K0",
-                                   "ground",   "porosity", "permeability", "biot_alpha", "storage"};
+const char *const kRegionKeys[] = {"material",
+                                   "E",
+                                   "nu",
+                                   "rho_s",
+                                   "K0",
+                                   "ground",
+                                   "porosity",
+                                   "permeability",
+                                   "biot_alpha",
+                                   "storage",
+                                   "cohesion",
+                                   "friction_angle",
+                                   "dilation_angle",
+                                   "tension_cutoff"};
 const char *const kBoundaryQuantities[] = {"ux", "uy", "uz", "p", "p3", "traction", "flux"};
 const char *const kInterfaceKeys[] = {
     "surfaces",       "side1",       "KN",   "KT", "friction", "dilation_angle",

@@ -62,18 +62,22 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
   bool set = false;
   PetscFunctionBeginUser;
   PetscCall(getString(PetscOptionsObject, p + "material",
-                      "material: elastic (solid only) or biot (porous, with pore pressure)",
+                      "material: elastic (solid only), biot (porous, with pore pressure) or "
+                      "mohr_coulomb (porous, Mohr-Coulomb skeleton)",
                       material, &set));
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
              "missing option %smaterial: region '%s' needs "
-             "'elastic' or 'biot'",
+             "'elastic', 'biot' or 'mohr_coulomb'",
              p.c_str(), r.name.c_str());
   if (material == "elastic")
     r.model = MaterialModel::elastic;
   else if (material == "biot")
     r.model = MaterialModel::biot;
+  else if (material == "mohr_coulomb")
+    r.model = MaterialModel::mohr_coulomb;
   else
-    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%smaterial %s: expected 'elastic' or 'biot'", p.c_str(),
+    SETERRQ(comm, PETSC_ERR_USER_INPUT,
+            "%smaterial %s: expected 'elastic', 'biot' or 'mohr_coulomb'", p.c_str(),
             material.c_str());
 
   PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "E",
@@ -140,6 +144,52 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
                       nullptr));
     PetscCheck(r.storage >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sstorage = %g: 1/M must be >= 0",
                p.c_str(), r.storage);
+  }
+  if (r.model == MaterialModel::mohr_coulomb) {
+    // Strength of the skeleton (effective stress): c, phi, psi (non-associated when psi < phi)
+    // and the optional tension cut-off on the largest principal effective stress.
+    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "cohesion",
+                              "cohesion c [Pa] of region " + r.name, &r.cohesion));
+    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "friction_angle",
+                              "friction angle phi [degrees] of region " + r.name,
+                              &r.friction_angle));
+    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "dilation_angle",
+                              "dilation angle psi [degrees] of region " + r.name,
+                              &r.dilation_angle));
+    PetscCheck(r.cohesion >= 0.0, comm, PETSC_ERR_USER_INPUT,
+               "%scohesion = %g: the cohesion [Pa] must be >= 0", p.c_str(), r.cohesion);
+    PetscCheck(r.friction_angle >= 0.0 && r.friction_angle < 90.0, comm, PETSC_ERR_USER_INPUT,
+               "%sfriction_angle = %g: the friction angle [degrees] must lie in [0, 90)", p.c_str(),
+               r.friction_angle);
+    PetscCheck(r.cohesion > 0.0 || r.friction_angle > 0.0, comm, PETSC_ERR_USER_INPUT,
+               "%scohesion = 0 and %sfriction_angle = 0: a soil without cohesion and friction "
+               "has no strength; give c > 0 or phi > 0",
+               p.c_str(), p.c_str());
+    PetscCheck(r.dilation_angle >= 0.0 && r.dilation_angle <= r.friction_angle, comm,
+               PETSC_ERR_USER_INPUT,
+               "%sdilation_angle = %g: the dilation angle [degrees] must lie in [0, phi] = [0, "
+               "%g] (%sfriction_angle)",
+               p.c_str(), r.dilation_angle, r.friction_angle, p.c_str());
+    bool cutoff = false;
+    PetscCall(getReal(PetscOptionsObject, p + "tension_cutoff",
+                      "tension cut-off [Pa] on the largest principal effective stress of region " +
+                          r.name + ", in [0, c / tan(phi)] (optional; none: the cone's apex)",
+                      &r.tension_cutoff, &cutoff));
+    if (cutoff) {
+      PetscCheck(r.tension_cutoff >= 0.0, comm, PETSC_ERR_USER_INPUT,
+                 "%stension_cutoff = %g: the tensile strength [Pa] must be >= 0", p.c_str(),
+                 r.tension_cutoff);
+      // Beyond the apex c / tan(phi) the cut-off would never be reached.
+      const double apex = r.friction_angle > 0.0
+                              ? r.cohesion / std::tan(r.friction_angle * M_PI / 180.0)
+                              : INFINITY;
+      PetscCheck(r.tension_cutoff <= apex, comm, PETSC_ERR_USER_INPUT,
+                 "%stension_cutoff = %g: must not exceed the apex of the Mohr-Coulomb cone c / "
+                 "tan(phi) = %g Pa (omit the option for no cut-off)",
+                 p.c_str(), r.tension_cutoff, apex);
+    } else {
+      r.tension_cutoff = -1.0;
+    }
   }
   PetscFunctionReturn(0);
 }

@@ -27,7 +27,8 @@ std::string checkpointName(int step)
 }
 
 /// What ties the checkpoint to a partition: per rank, the owned unknowns, the history values
-/// and the 1-norm of the rank's local vertex coordinates (which vertices it holds).
+/// (interfaces and skeleton) and the 1-norm of the rank's local vertex coordinates (which
+/// vertices it holds).
 PetscErrorCode layoutOf(Run &run, Vec X, double layout[3])
 {
   PetscInt n;
@@ -38,7 +39,8 @@ PetscErrorCode layoutOf(Run &run, Vec X, double layout[3])
   PetscCall(DMGetCoordinatesLocal(run.dm, &coordinates));
   PetscCall(VecNorm(coordinates, NORM_1, &norm));
   layout[0] = (double)n;
-  layout[1] = (double)run.problem.interfaces().historyValues();
+  layout[1] =
+      (double)(run.problem.interfaces().historyValues() + run.problem.skeletonHistoryValues());
   layout[2] = norm;
   PetscFunctionReturn(0);
 }
@@ -142,6 +144,11 @@ PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
   PetscCall(writeVec(viewer, "last_increment", run.last_increment));
   PetscCall(
       writeValues(viewer, comm, "interface_history", history.data(), (PetscInt)history.size()));
+  if (run.problem.hasSkeletonHistory()) { // scenes without plastic regions write none
+    const std::vector<double> skeleton = run.problem.committedSkeletonHistory();
+    PetscCall(
+        writeValues(viewer, comm, "skeleton_history", skeleton.data(), (PetscInt)skeleton.size()));
+  }
   PetscCall(writeValues(viewer, comm, "output_times", times.data(),
                         rank == 0 ? (PetscInt)times.size() : 0));
   const PetscInt version = kVersion, ranks = size, step = run.step,
@@ -243,7 +250,7 @@ PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, Checkpoi
     PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, comm));
     PetscCheck(all, comm, PETSC_ERR_USER_INPUT,
                "checkpoint %s belongs to another mesh or partition (on this rank %.0f unknowns "
-               "and %.0f interface history values, the checkpoint has %.0f and %.0f): restart "
+               "and %.0f history values, the checkpoint has %.0f and %.0f): restart "
                "with the scene, -mesh_size_factor and number of ranks of the run that wrote it",
                path.c_str(), mine[0], mine[1], theirs_local[0], theirs_local[1]);
   }
@@ -254,6 +261,18 @@ PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, Checkpoi
     PetscCall(readValues(viewer, comm, "interface_history",
                          (PetscInt)run.problem.interfaces().historyValues(), history));
     PetscCall(run.problem.restoreHistory(history));
+  }
+  if (run.problem.hasSkeletonHistory()) {
+    PetscBool has = PETSC_FALSE;
+    PetscCall(PetscViewerHDF5HasDataset(viewer, "skeleton_history", &has));
+    PetscCheck(has, comm, PETSC_ERR_USER_INPUT,
+               "checkpoint %s has no skeleton history, but this scene has regions whose law "
+               "keeps one (e.g. mohr_coulomb): restart with the scene of the run that wrote it",
+               path.c_str());
+    std::vector<double> skeleton;
+    PetscCall(readValues(viewer, comm, "skeleton_history",
+                         (PetscInt)run.problem.skeletonHistoryValues(), skeleton));
+    PetscCall(run.problem.restoreSkeletonHistory(skeleton));
   }
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, nullptr, &step));
   PetscCall(
@@ -335,8 +354,11 @@ PetscErrorCode clearEarlierRun(MPI_Comm comm, const std::string &dir)
   if (rank == 0) {
     namespace fs = std::filesystem;
     std::error_code ignored;
+    // interfaces.xmf: the single index of earlier versions, now interface_cells.xmf and
+    // interface_points.xmf.
     for (const char *name :
-         {"fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf", "timeseries.csv"})
+         {"fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf", "interface_cells.xmf",
+          "interface_points.xmf", "timeseries.csv", "timeseries.csv.units"})
       fs::remove(fs::path(dir) / name, ignored);
     const fs::path checkpoints = fs::path(dir) / "checkpoints";
     if (fs::is_directory(checkpoints, ignored)) {

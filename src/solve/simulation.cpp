@@ -117,7 +117,9 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
                            (int)rejected, wall},
                    resultants, interface, probes);
   if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0) {
-    PetscCall(run.fields.write(t, local, run.initial));
+    CellFields cells;
+    PetscCall(run.problem.cellFields(local, cells));
+    PetscCall(run.fields.write(t, local, run.initial, &cells));
     PetscCall(
         run.interface_fields.write(t, run.problem.interfaces(), local, InterfaceRates{rate, dt}));
   }
@@ -368,6 +370,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   Vec X;
   PetscCall(DMCreateGlobalVector(run.dm, &X));
   PetscCall(PetscObjectSetName((PetscObject)X, "solution"));
+  PetscCall(attachSolutionView(run, X));
   PetscCall(DMLocalToGlobal(run.dm, run.initial, INSERT_VALUES, X));
   PetscCall(VecDuplicate(X, &run.last_increment));
   PetscCall(VecSet(run.last_increment, 0.0));
@@ -492,6 +495,13 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   if (run.scene.output_every > 0) {
     const std::vector<double> *times = restart.restart ? &resumed.output_times : nullptr;
     PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields", times));
+    std::vector<PetscInt> cells;
+    std::vector<int> regions;
+    std::vector<std::string> names;
+    run.problem.cellRegions(cells, regions);
+    for (const Region &r : run.scene.regions)
+      names.push_back(r.name);
+    PetscCall(run.fields.writeRegions(cells, regions, names));
     PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir, times));
   }
   PetscCall(endLogEvent(run.events.output));
@@ -506,6 +516,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   run.step_start = MPI_Wtime();
   run.loop_start_wall = run.step_start;
   PetscCall(TSGetTime(run.ts, &run.loop_start_time));
+  run.stage_time = run.loop_start_time; // the state PETSc's monitors view at step 0
   PetscCall(TSGetMaxTime(run.ts, &run.t_end));
   const int first_step = run.step;
   PetscCall(TSSetErrorIfStepFails(run.ts, PETSC_FALSE));

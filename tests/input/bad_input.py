@@ -45,6 +45,10 @@ CRASH = [r"Segmentation", r"(?i)caught signal|exited on signal|signal:\s|signal 
          r"core dumped", r"Floating point exception",
          r"std::bad_alloc", r"terminate called", r"SIGSEGV|SIGBUS|SIGFPE|SIGABRT"]
 
+# a valid Mohr-Coulomb soil for the base scene (c = 10 kPa, phi = 30, psi = 5 degrees)
+MOHR_COULOMB = ["-region_soil_material", "mohr_coulomb", "-region_soil_cohesion", "1e4",
+                "-region_soil_friction_angle", "30", "-region_soil_dilation_angle", "5"]
+
 # name: dict(args=[...], drop=[options removed from the scene], expect=[substrings],
 #            ranks=1, ok=False (expect success instead of failure))
 CASES = {
@@ -296,6 +300,32 @@ CASES = {
     "malloc_dump_clean_interface_np2": dict(
         scene=JOINT_SCENE, args=["-ts_max_time", "0.4", "-malloc_dump", "-bc_left_p3", "0"], ok=True,
         expect=["2 steps"], absent_text=["PetscMalloc", "bytes "], ranks=2),
+    # Mohr-Coulomb soil (-region_<r>_material mohr_coulomb): strength parameters and the
+    # initial stress inside the yield surface.
+    "mc_missing_cohesion": dict(args=MOHR_COULOMB[0:2] + MOHR_COULOMB[4:],
+                                expect=["-region_soil_cohesion", "missing"]),
+    "mc_negative_cohesion": dict(args=MOHR_COULOMB + ["-region_soil_cohesion", "-1"],
+                                 expect=["-region_soil_cohesion", ">= 0"]),
+    "mc_friction_90": dict(args=MOHR_COULOMB + ["-region_soil_friction_angle", "90"],
+                           expect=["-region_soil_friction_angle", "[0, 90)"]),
+    "mc_dilation_above_friction": dict(args=MOHR_COULOMB + ["-region_soil_dilation_angle", "35"],
+                                       expect=["-region_soil_dilation_angle = 35", "[0, phi] = [0, 30"]),
+    "mc_no_strength": dict(args=MOHR_COULOMB + ["-region_soil_cohesion", "0",
+                                                "-region_soil_friction_angle", "0",
+                                                "-region_soil_dilation_angle", "0"],
+                           expect=["-region_soil_cohesion = 0", "no strength"]),
+    "mc_tension_cutoff_negative": dict(args=MOHR_COULOMB + ["-region_soil_tension_cutoff", "-5"],
+                                       expect=["-region_soil_tension_cutoff", ">= 0"]),
+    "mc_tension_cutoff_beyond_apex": dict(args=MOHR_COULOMB + ["-region_soil_tension_cutoff", "1e5"],
+                                          expect=["-region_soil_tension_cutoff", "apex"]),
+    # K0 = 0.1 below the active coefficient of phi = 30 degrees (1/3): the geostatic state lies
+    # outside the cone (c = 1 kPa is small beside sigma'_v ~ 10 kPa at the base).
+    "mc_initial_stress_outside": dict(
+        args=MOHR_COULOMB + ["-region_soil_cohesion", "1e3", "-region_soil_K0", "0.1",
+                             "-region_soil_rho_s", "2650", "-region_soil_porosity", "0.4",
+                             "-gravity", "9.81", "-initial_state", "geostatic",
+                             "-surface_elevation", "1"],
+        expect=["region 'soil'", "outside the yield surface", "-region_soil_K0"]),
     "help": dict(help=True, ok=True,
                  expect=["-region_<r>_E", "-region_<r>_permeability", "-bc_<b>_traction",
                          "-initial_state", "-probe_<name>", "timeseries.csv"]),
