@@ -35,7 +35,8 @@ def floats(text, n, what):
     return values
 
 
-def main(argv):
+def parse(argv):
+    """(args, the keyword arguments of Pipeline) from the command line."""
     ap = argparse.ArgumentParser(prog="render.py", description=__doc__.split("\n")[0])
     ap.add_argument("output_dir")
     ap.add_argument("--output", help="PNG file (default OUTPUT_DIR/fields.png)")
@@ -68,13 +69,19 @@ def main(argv):
         ap.error(f"--view: expected x0 < x1 and y0 < y1, got {args.view}")
     if args.scale is not None and args.scale < 0:
         ap.error(f"--scale: expected a factor >= 0, got {args.scale}")
+    args.size = (width, height)
+    options = dict(view=args.view, time=args.time, scale=args.scale, reflect=args.reflect,
+                   slice_at=slice_at, field=args.field, title=args.title)
+    return args, options
+
+
+def main(argv):
+    args, options = parse(argv)
+    width, height = args.size
     png = args.output or os.path.join(args.output_dir, "fields.png")
     state = args.state or os.path.splitext(png)[0] + ".pvsm"
-
     try:
-        pipeline = Pipeline(args.output_dir, view=args.view, time=args.time, scale=args.scale,
-                            reflect=args.reflect, slice_at=slice_at, field=args.field,
-                            title=args.title)
+        pipeline = Pipeline(args.output_dir, **options)
     except ViewError as e:
         print(f"render.py: {e}", file=sys.stderr)
         return 2
