@@ -282,6 +282,7 @@ class Pipeline:
     def show(self, view):
         """Displays, colours, legends and camera in a render view."""
         SetActiveView(view)
+        font = max(8, round(14 * view.ViewSize[0] / 1200.0))  # 14 pt at 1200 pixels across
         view.ViewTime = self.time
         animation = GetAnimationScene()  # the time saved in a state file, shown in the GUI
         animation.UpdateAnimationUsingDataTimeSteps()
@@ -304,7 +305,7 @@ class Pipeline:
         bar.Title = self.label
         bar.ComponentTitle = ""
         bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
-        bar.TitleFontSize = bar.LabelFontSize = 14
+        bar.TitleFontSize = bar.LabelFontSize = font
         bar.RangeLabelFormat = "%-#.3g"
         bar.WindowLocation = "Any Location"
         bar.Orientation = "Vertical"
@@ -318,6 +319,7 @@ class Pipeline:
             slut.Annotations = [x for i, n in enumerate(STATE_NAMES) for x in (str(i), n)]
             slut.IndexedColors = [c for rgb in STATE_COLOURS for c in rgb]
             di.LineWidth = self.line_width
+            di.Ambient, di.Diffuse = 1.0, 0.0  # flat: the legend's colours, unshaded
             try:
                 di.RenderLinesAsTubes = 1
             except AttributeError:
@@ -326,7 +328,7 @@ class Pipeline:
             sbar = GetScalarBar(slut, view)
             sbar.Title = "interface"
             sbar.TitleColor = sbar.LabelColor = [0.0, 0.0, 0.0]
-            sbar.TitleFontSize = sbar.LabelFontSize = 14
+            sbar.TitleFontSize = sbar.LabelFontSize = font
             sbar.WindowLocation = "Any Location"
             sbar.TextPosition = "Ticks left/bottom, annotations right/top"
             sbar.Position = [0.03, 0.35]
@@ -336,7 +338,7 @@ class Pipeline:
         td = Show(text, view)
         td.WindowLocation = "Upper Center"
         td.Color = [0.0, 0.0, 0.0]
-        td.FontSize = 14
+        td.FontSize = font
         td.Justification = "Center"
         self.place_camera(view)
 
