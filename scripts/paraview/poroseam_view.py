@@ -2,7 +2,8 @@
 (pvpython, PNG + state file) and view.py (the ParaView GUI, `paraview --script`).
 
     bulk:      fields.xmf -> [3D: Slice] -> Warp By Vector (displacement x scale)
-               -> [reflect: Reflect about x = 0] -> coloured by the excess pore pressure [kPa]
+               -> [reflect: Reflect about the picture's
+               horizontal coordinate = 0, x = r = 0 in 2D] -> coloured by the excess pore pressure [kPa]
                (or the pressure, or |u| in a drained scene); NaN (non-porous regions) grey
     interface: interface_cells.xmf, or the cell grid of interfaces.xmf -> [3D: Slice]
                -> warped with its own displacement_minus (side 1) when the output has it,
@@ -128,8 +129,9 @@ class Pipeline:
             self.time = min(times, key=lambda t: abs(t - time))
         b = bounds(bulk, self.time)
         self.dim = 3 if b[5] - b[4] > 0 else 2
-        # Reflect about x = 0 (the axis of an axisymmetric run, the symmetry plane x = 0 of a
-        # quarter model) by default only for axisymmetric runs.
+        # Reflect about the picture's horizontal coordinate = 0 (the axis x = r = 0 of an
+        # axisymmetric run, the symmetry plane x = 0 of a quarter model cut along y = 0),
+        # by default only for axisymmetric runs.
         self.reflect = self.axisymmetric if reflect is None else reflect
         point_arrays = set(bulk.PointData.keys())
 
@@ -145,9 +147,10 @@ class Pipeline:
             section.SliceType.Origin = origin
             section.SliceType.Normal = normal
             self.slice = (normal, origin)
+            self.slice_axis = "xyz".index(axis)
             self.notes.append(f"section {axis} = {value:g} m")
         else:
-            self.slice = None
+            self.slice, self.slice_axis = None, None
 
         # the field shown
         if field is None:
@@ -204,8 +207,8 @@ class Pipeline:
             self.diverging = False
         self.field = field
         if self.reflect:
-            shown = Reflect(registrationName="reflected about x = 0", Input=shown)
-            shown.Plane = "X"
+            shown = Reflect(registrationName="reflected", Input=shown)
+            shown.Plane = "XYZ"[self.plane_axes()[0]]
             shown.Center = 0.0
             shown.CopyInput = 1
             shown.FlipAllInputArrays = 1
@@ -214,9 +217,7 @@ class Pipeline:
         # ---- the interfaces
         self.interface_out = None
         path, combined = interface_file(self.out_dir)
-        if path is None:
-            self.notes.append("no interface output")
-        else:
+        if path is not None:  # else a scene without interfaces
             ifc = Xdmf3ReaderS(registrationName=os.path.basename(path), FileName=[path])
             ifc.UpdatePipelineInformation()
             cells = ifc
@@ -256,7 +257,7 @@ class Pipeline:
                 iout = lift
                 if self.reflect:
                     iout = Reflect(registrationName="interface reflected", Input=lift)
-                    iout.Plane = "X"
+                    iout.Plane = "XYZ"[self.plane_axes()[0]]
                     iout.Center = 0.0
                     iout.CopyInput = 1
                 self.interface_out = iout
@@ -264,10 +265,17 @@ class Pipeline:
         self.title = title
 
     def camera_direction(self):
-        """The direction the camera looks in (2D: -z; 3D: along the slice normal)."""
+        """The direction the camera looks in: 2D -z; a 3D section face on, oriented so that
+        the picture's horizontal axis (plane_axes) increases to the right."""
         if self.slice is None:
             return (0.0, 0.0, -1.0)
-        return tuple(float(c) for c in self.slice[0])
+        return {0: (-1.0, 0.0, 0.0), 1: (0.0, 1.0, 0.0), 2: (0.0, 0.0, -1.0)}[self.slice_axis]
+
+    def plane_axes(self):
+        """(horizontal, vertical) coordinate indices of the picture."""
+        if self.slice is None:
+            return 0, 1
+        return {0: (1, 2), 1: (0, 2), 2: (0, 1)}[self.slice_axis]
 
     def caption(self):
         lines = [self.title or f"{self.scene}: {self.label.split(' [')[0]}, t = {self.time:g} s"]
@@ -275,7 +283,8 @@ class Pipeline:
                   if self.umax > 0 else "undeformed (no displacement)")
         extra = []
         if self.reflect:
-            extra.append("reflected about the axis" if self.axisymmetric else "reflected about x = 0")
+            extra.append("reflected about the axis" if self.axisymmetric
+                         else f"reflected about {'xyz'[self.plane_axes()[0]]} = 0")
         lines.append(", ".join([deform] + extra + self.notes))
         return "\n".join(lines)
 
@@ -347,33 +356,20 @@ class Pipeline:
         view.InteractionMode = "2D"
         view.CameraParallelProjection = 1
         cam = view.GetActiveCamera()
-        if self.slice is None:
-            up, look = (0.0, 1.0, 0.0), (0.0, 0.0, -1.0)
-        else:
-            look = self.camera_direction()
-            up = (0.0, 0.0, 1.0) if abs(look[2]) < 0.9 else (0.0, 1.0, 0.0)
+        look = self.camera_direction()
+        h, v = self.plane_axes()
+        up = [0.0, 0.0, 0.0]
+        up[v] = 1.0
         if self.view_box is not None:
             x0, x1, y0, y1 = self.view_box
-            if self.slice is None:
-                centre = [0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0]
-            else:  # the section's plane: horizontal = x (y for an x-normal), vertical = z
-                n, o = self.slice
-                centre = list(o)
-                h = 1 if n[0] else 0
-                centre[h] = 0.5 * (x0 + x1)
-                centre[2] = 0.5 * (y0 + y1)
+            centre = [0.0, 0.0, 0.0] if self.slice is None else list(self.slice[1])
+            centre[h], centre[v] = 0.5 * (x0 + x1), 0.5 * (y0 + y1)
             width, height = x1 - x0, y1 - y0
         else:
-            b = [0.0] * 6
             self.bulk_out.UpdatePipeline(self.time)
             b = self.bulk_out.GetDataInformation().GetBounds()
             centre = [0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])]
-            if self.slice is None:
-                width, height = b[1] - b[0], b[3] - b[2]
-            else:
-                n = self.slice[0]
-                width, height = (b[3] - b[2] if n[0] else b[1] - b[0]), b[5] - b[4]
-            width, height = 1.1 * width, 1.1 * height
+            width, height = 1.1 * (b[2 * h + 1] - b[2 * h]), 1.1 * (b[2 * v + 1] - b[2 * v])
         distance = 10.0 * max(width, height, 1e-9)
         view.CameraFocalPoint = centre
         view.CameraPosition = [centre[i] - distance * look[i] for i in range(3)]
