@@ -21,6 +21,10 @@ struct InterfacePointState {
   int num_points = 0;                  ///< integration points of the cell
   int face_vertices = 0;               ///< vertices of the cell's side-1 face
   const double *face_coords = nullptr; ///< their coordinates (face_vertices x dim), face order
+  /// Displacements of side 1 and side 2 at the same vertices (face_vertices x dim), for output.
+  const double *face_displacement1 = nullptr;
+  const double *face_displacement2 = nullptr;
+  const double *phi = nullptr; ///< the face's shape functions at the point (face_vertices)
   double x[3] = {0, 0, 0};
   double weight = 0.0;     ///< area (length in 2D) it stands for
   double frame[3][3];      ///< e1 (normal, side 1 -> 2), e2, e3

@@ -3,6 +3,7 @@
 // values, and the initial (geostatic) state. Point laws come from physics/.
 #pragma once
 
+#include "poroseam/cell_fields.hpp"
 #include "poroseam/closure_cache.hpp"
 #include "poroseam/geostatic.hpp"
 #include "poroseam/interface_assembly.hpp"
@@ -63,6 +64,13 @@ public:
   /// as in residual (mode.include_loads does not matter: loads do not depend on x).
   PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate,
                           const ResidualMode &mode, Mat J) const;
+
+  /// Per-cell output of the state `local` (a local vector with boundary values inserted):
+  /// effective_stress and total_stress [Pa] (full 3 x 3, tension positive) and strain [-],
+  /// each averaged over the cell's integration points (src/assembly/cell_stress.hpp).
+  PetscErrorCode cellFields(Vec local, CellFields &out) const;
+  /// The bulk cells of this rank and the index in scene().regions of each.
+  void cellRegions(std::vector<PetscInt> &cells, std::vector<int> &regions) const;
 
   /// Profiling: residual and Jacobian, bulk and interface terms, become -log_view events.
   void setLogEvents(const LogEvents &events) { events_ = events; }

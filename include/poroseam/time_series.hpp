@@ -27,12 +27,19 @@ public:
   TimeSeries &operator=(const TimeSeries &) = delete;
   ~TimeSeries() { close(); }
 
+  /// A column of timeseries.csv and its unit (SI, UDUNITS spelling; "1": a number).
+  struct Column {
+    std::string name, unit;
+  };
+  /// The columns of timeseries.csv for this scene, in order.
+  static std::vector<Column> columns(const Scene &scene);
   /// The header line of timeseries.csv for this scene.
   static std::string header(const Scene &scene);
   /// Opens `<dir>/timeseries.csv` for a new run (resume_step < 0), or, restarting from the
   /// checkpoint of step resume_step, keeps the interrupted run's rows of steps 0..resume_step
   /// (its later rows are dropped: the restarted run writes them again) and appends.
-  /// Collective on comm: every rank learns whether rank 0 could.
+  /// Rank 0 also writes `<dir>/timeseries.csv.units`: the line "column,unit", then one line
+  /// "<column>,<unit>" per column. Collective on comm: every rank learns whether rank 0 could.
   PetscErrorCode open(MPI_Comm comm, const Scene &scene, const std::string &dir, int resume_step);
   /// One row: the step's own columns, then the boundary resultants (per boundary: dim forces,
   /// the flux with pressure, the interface outflow with interface pressure, then one outflow

@@ -100,7 +100,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
   PetscCall(VecGetArrayRead(local, &ua));
   if (rates.rate) PetscCall(VecGetArrayRead(rates.rate, &ra));
   PetscCall(VecGetArrayRead(coords, &ca));
-  std::vector<double> x1, u_closure, udot_closure;
+  std::vector<double> x1, u1, u2, u_closure, udot_closure;
   const double g = scene_->gravity;
   for (size_t i = 0; i < cells_.size(); ++i) {
     const Cell &cell = cells_[i];
@@ -120,9 +120,14 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
     // Side-1 vertex coordinates: the coordinate closure lists vertices like the displacements.
     const PetscInt *xc = closures_.coordinates(i);
     x1.resize(e.num_vertices * dim_);
+    u1.resize(e.num_vertices * dim_);
+    u2.resize(e.num_vertices * dim_);
     for (int a = 0; a < e.num_vertices; ++a)
-      for (int d = 0; d < dim_; ++d)
+      for (int d = 0; d < dim_; ++d) {
         x1[a * dim_ + d] = ca[xc[cell.u1[a] + d]];
+        u1[a * dim_ + d] = u[cell.u1[a] + d];
+        u2[a * dim_ + d] = u[cell.u2[a] + d];
+      }
     for (int q = 0; q < e.num_quadrature; ++q) {
       const double *phi = &e.basis[q * e.num_vertices];
       InterfacePointState st;
@@ -131,6 +136,9 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
       st.num_points = e.num_quadrature;
       st.face_vertices = e.num_vertices;
       st.face_coords = x1.data();
+      st.face_displacement1 = u1.data();
+      st.face_displacement2 = u2.data();
+      st.phi = phi;
       st.weight = surfaceWeight(e, x1.data(), dim_, q);
       if (scene_->axisymmetric) {
         // A ring: forces and flows are for the full circle. Nodal points take the lumped

@@ -1,15 +1,19 @@
 // Bulk field output: HDF5 (through PETSc's HDF5 viewer) plus an XDMF index for ParaView.
 //
 // HDF5 layout of <dir>/<basename>.h5 (global vertex numbering: owned vertices of rank 0 first,
-// then rank 1, ...; the same order in the geometry and in every field):
+// then rank 1, ...; the same order in the geometry and in every field; cells likewise):
 //   /geometry/vertices              [Nv, cdim]  double   vertex coordinates
 //   /topology/cells                 [Nc, nc]    PetscInt connectivity (0-based, XDMF order)
 //   /fields/displacement/<step>     [Nv, 3]     double   (padded with zeros when dim < 3)
-//   /fields/pressure/<step>         [Nv]        double   (only when the section has pressure)
+//   /fields/pressure/<step>         [Nv]        double   (only when the section has pressure;
+//                                                        NaN at vertices without pressure)
 //   /fields/excess_pressure/<step>  [Nv]        double   (pressure - initial pressure)
-// Every field dataset carries an attribute "time". The XDMF file is rewritten by rank 0 after
-// every write() (to a temporary file that is then renamed), so a crashed run still leaves a
-// readable time series.
+//   /cell_fields/region             [Nc, 1]     PetscInt region index; attribute "names"
+//   /cell_fields/<name>/<step>      [Nc, 9] or [Nc] double ([Nc, 1] PetscInt when integer):
+//                                   the CellFields given to write()
+// Every dataset carries a string attribute "units"; every field dataset an attribute "time".
+// The XDMF file is rewritten by rank 0 after every write() (to a temporary file that is then
+// renamed), so a crashed run still leaves a readable time series.
 #include "poroseam/field_writer.hpp"
 
 #include "xdmf.hpp"
@@ -19,6 +23,7 @@
 #include <petscviewerhdf5.h>
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace poroseam {
@@ -106,24 +111,51 @@ struct FieldWriter::Impl {
   PetscInt presField = -1;
   PetscInt dispComp = 0;
   std::vector<PetscInt> ownedVertices; // local vertex points, in global output order
+  std::vector<PetscInt> ownedCells;    // local cell points, in global output order
   std::vector<double> times;
+  bool regions = false;             // /cell_fields/region written
+  std::vector<CellField> cellNames; // name, units, components, integer of the cell fields
+
+  /// index[k]: position in `cells` of ownedCells[k]; an error if some cell is missing.
+  PetscErrorCode cellIndex(const std::vector<PetscInt> &cells, std::vector<size_t> &index) const;
 
   PetscErrorCode writeXdmf();
   PetscErrorCode writeVertexVec(const char *group, const std::string &name, PetscInt bs,
-                                const std::vector<PetscScalar> &values, double time, bool withTime);
+                                const std::vector<PetscScalar> &values, const char *units,
+                                double time, bool withTime);
 };
 
 PetscErrorCode FieldWriter::Impl::writeVertexVec(const char *group, const std::string &name,
                                                  PetscInt bs,
                                                  const std::vector<PetscScalar> &values,
-                                                 double time, bool withTime)
+                                                 const char *units, double time, bool withTime)
 {
   const PetscInt n = static_cast<PetscInt>(ownedVertices.size()) * bs;
 
   PetscFunctionBeginUser;
   PetscCheck(static_cast<PetscInt>(values.size()) == n, comm, PETSC_ERR_PLIB,
              "FieldWriter: wrong number of values for %s", name.c_str());
-  PetscCall(xdmf::writeReals(viewer, comm, group, name, bs, values, withTime ? &time : nullptr));
+  PetscCall(
+      xdmf::writeReals(viewer, comm, group, name, bs, values, units, withTime ? &time : nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::Impl::cellIndex(const std::vector<PetscInt> &cells,
+                                            std::vector<size_t> &index) const
+{
+  PetscInt pStart, pEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  std::vector<size_t> position(pEnd - pStart, std::numeric_limits<size_t>::max());
+  for (size_t i = 0; i < cells.size(); ++i)
+    if (cells[i] >= pStart && cells[i] < pEnd) position[cells[i] - pStart] = i;
+  index.resize(ownedCells.size());
+  for (size_t k = 0; k < ownedCells.size(); ++k) {
+    index[k] = position[ownedCells[k] - pStart];
+    PetscCheck(index[k] != std::numeric_limits<size_t>::max(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "FieldWriter: no cell value for cell %" PetscInt_FMT, ownedCells[k]);
+  }
   PetscFunctionReturn(0);
 }
 
@@ -162,6 +194,17 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
         << "        </Attribute>\n";
     };
 
+    const std::string nc = std::to_string(numCells);
+    auto cellAttribute = [&](std::ostringstream &o, const CellField &f, const std::string &path) {
+      const char *type = f.components == 9 ? "Tensor" : "Scalar";
+      // Integers are [N, 1] (ISView); a scalar of doubles is [N].
+      const std::string dims =
+          f.integer || f.components > 1 ? nc + " " + std::to_string(f.components) : nc;
+      o << "        <Attribute Name=\"" << f.name << "\" AttributeType=\"" << type
+        << "\" Center=\"Cell\">\n          " << xdmf::dataItem(dims, f.integer, h5name, path)
+        << "\n        </Attribute>\n";
+    };
+
     x << "<?xml version=\"1.0\" ?>\n"
       << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
       << "<Xdmf Version=\"3.0\">\n"
@@ -182,6 +225,14 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
         attribute(x, "pressure", false, s);
         attribute(x, "excess_pressure", false, s);
       }
+      if (regions) {
+        CellField region;
+        region.name = "region";
+        region.integer = true;
+        cellAttribute(x, region, "/cell_fields/region");
+      }
+      for (const CellField &f : cellNames)
+        cellAttribute(x, f, "/cell_fields/" + f.name + "/" + std::to_string(s));
       x << "      </Grid>\n";
     }
     x << "    </Grid>\n"
@@ -348,6 +399,7 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
                  "FieldWriter: vertex %" PetscInt_FMT " has no global number", verts[i]);
       cells.push_back(gnum[verts[i]]);
     }
+    im.ownedCells.push_back(c);
     ++nCellsLocal;
   }
   PetscCall(MPIU_Allreduce(&nCellsLocal, &im.numCells, 1, MPIU_INT, MPI_SUM, comm));
@@ -380,14 +432,15 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   if (resume) im.times = *resume;
   PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(),
                                 resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
-  PetscCall(im.writeVertexVec("/geometry", "vertices", im.cdim, xyz, 0.0, false));
-  PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.corners, cells));
+  PetscCall(im.writeVertexVec("/geometry", "vertices", im.cdim, xyz, "m", 0.0, false));
+  PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.corners, cells, "1"));
   PetscCall(PetscViewerFlush(im.viewer));
   PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_initial)
+PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_initial,
+                                  const CellFields *cells)
 {
   PetscFunctionBeginUser;
   PetscCheck(impl_ && impl_->viewer, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE,
@@ -414,8 +467,9 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
 
   std::vector<PetscScalar> disp(nv * 3, 0.0), pres, excess;
   if (im.presField >= 0) {
-    pres.assign(nv, 0.0);
-    excess.assign(nv, 0.0);
+    // A vertex without pressure belongs to non-porous regions only: no pore pressure there.
+    pres.assign(nv, std::numeric_limits<double>::quiet_NaN());
+    excess.assign(nv, std::numeric_limits<double>::quiet_NaN());
   }
   PetscCall(VecGetArrayRead(local_solution, &sol));
   if (local_initial) PetscCall(VecGetArrayRead(local_initial, &init));
@@ -441,13 +495,73 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
   if (local_initial) PetscCall(VecRestoreArrayRead(local_initial, &init));
 
   const std::string step = std::to_string(im.times.size());
-  PetscCall(im.writeVertexVec("/fields/displacement", step, 3, disp, time, true));
+  PetscCall(im.writeVertexVec("/fields/displacement", step, 3, disp, "m", time, true));
   if (im.presField >= 0) {
-    PetscCall(im.writeVertexVec("/fields/pressure", step, 1, pres, time, true));
-    PetscCall(im.writeVertexVec("/fields/excess_pressure", step, 1, excess, time, true));
+    PetscCall(im.writeVertexVec("/fields/pressure", step, 1, pres, "Pa", time, true));
+    PetscCall(im.writeVertexVec("/fields/excess_pressure", step, 1, excess, "Pa", time, true));
+  }
+  if (cells) {
+    std::vector<size_t> index;
+    PetscCall(im.cellIndex(cells->cells, index));
+    std::vector<CellField> names;
+    for (const CellField &f : cells->fields) {
+      const size_t nc = f.components;
+      PetscCheck(f.components >= 1 && f.values.size() == cells->cells.size() * nc, PETSC_COMM_SELF,
+                 PETSC_ERR_PLIB, "FieldWriter: cell field %s has %zu values for %zu cells",
+                 f.name.c_str(), f.values.size(), cells->cells.size());
+      const std::string group = "/cell_fields/" + f.name;
+      if (f.integer) {
+        std::vector<PetscInt> v;
+        v.reserve(index.size() * nc);
+        for (size_t k : index)
+          for (size_t j = 0; j < nc; ++j)
+            v.push_back(static_cast<PetscInt>(f.values[k * nc + j]));
+        PetscCall(xdmf::writeInts(im.viewer, im.comm, group, step, f.components, v, f.units.c_str(),
+                                  &time));
+      } else {
+        std::vector<PetscScalar> v;
+        v.reserve(index.size() * nc);
+        for (size_t k : index)
+          for (size_t j = 0; j < nc; ++j)
+            v.push_back(f.values[k * nc + j]);
+        PetscCall(xdmf::writeReals(im.viewer, im.comm, group, step, f.components, v,
+                                   f.units.c_str(), &time));
+      }
+      CellField name = f;
+      name.values.clear();
+      names.push_back(name);
+    }
+    im.cellNames = names;
   }
   PetscCall(PetscViewerFlush(im.viewer));
   im.times.push_back(time);
+  PetscCall(im.writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::writeRegions(const std::vector<PetscInt> &cells,
+                                         const std::vector<int> &region,
+                                         const std::vector<std::string> &names)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(impl_ && impl_->viewer, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE,
+             "FieldWriter::writeRegions called before open or after close");
+  Impl &im = *impl_;
+  PetscCheck(cells.size() == region.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "FieldWriter::writeRegions: %zu cells, %zu regions", cells.size(), region.size());
+  std::vector<size_t> index;
+  PetscCall(im.cellIndex(cells, index));
+  std::vector<PetscInt> ids;
+  ids.reserve(index.size());
+  for (size_t k : index)
+    ids.push_back(region[k]);
+  std::string list;
+  for (size_t r = 0; r < names.size(); ++r)
+    list += (r ? "," : "") + names[r];
+  PetscCall(xdmf::writeInts(im.viewer, im.comm, "/cell_fields", "region", 1, ids, "1"));
+  PetscCall(xdmf::writeText(im.viewer, "/cell_fields/region", "names", list));
+  PetscCall(PetscViewerFlush(im.viewer));
+  im.regions = true;
   PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
 }

@@ -11,11 +11,15 @@
 //                                                     then the nodes) when triangles and quads mix
 //   /cells/nodes_per_cell            [Nc, 1]  int
 //   /cells/interface, /cells/surface [Nc, 1]  int     index in Scene::interfaces / its surfaces
+//   /cells/part                      [Nc, 1]  int     index of the named part (interface, or
+//                                                     interface.surface when it has several);
+//                                                     attribute "names": the parts, comma
+//                                                     separated (interface likewise)
 //   /cells/area                      [Nc]     double  sum of the integration point weights
 //   /cells/normal                    [Nc, 3]  double  e1 (side 1 -> side 2)
 //   /points/geometry                 [Np, d]  double  integration point positions
 //   /points/topology                 [Np, 1]  int     0..Np-1 (Polyvertex)
-//   /points/interface, /points/surface, /points/cell (index of its cell in /cells),
+//   /points/interface, /points/surface, /points/part, /points/cell (index of its cell),
 //   /points/point (index within the cell)   [Np, 1] int (PETSc writes integers as [N, bs])
 //   /points/weight [Np], /points/normal [Np, 3]       double
 //   /cells/fields/<name>/<step>, /points/fields/<name>/<step>, each with attribute "time":
@@ -24,6 +28,10 @@
 //     shear_stress [N] or [N, 2]: local tau, shear_traction [N, 3] = sum_k tau_k e_(k+1),
 //     traction [N, 3] (on side 1, global), mobilised_friction [N] = |tau| / p'_N (0 where
 //     p'_N = 0), state [N, 1] int (0 open, 1 stick, 2 slip).
+//   /cells/fields/displacement_minus/<step>, .../displacement_plus/<step> [Nn, 3]: the
+//     displacement of side 1 (minus) and side 2 (plus) at each cell node, so that the faces
+//     can be warped with the bulk; /points/fields/displacement_minus|plus [Np, 3] the same
+//     interpolated at the integration points.
 //   Only when some interface of the scene has flow (Scene::hasInterfacePressure()), also:
 //     interface_pressure [N] (p3), aperture [N] (h = D0 + opening), aperture_rate [N] (dh/dt),
 //     longitudinal_flux [N, 3] (q_l, global, m2/s), transversal_flux1 [N] (side 1 -> gap) and
@@ -32,10 +40,13 @@
 //     only with rates.rate).
 //   Cell values are averages over the cell's points weighted by `weight`; the cell's
 //   mobilised_friction is |mean tau| / mean p'_N and its state the maximum over its points.
-// XDMF <dir>/interfaces.xmf: one Domain with two temporal collections, "interface_cells"
-// (Polyline / Triangle / Quadrilateral / Mixed, Center="Cell" attributes) and
+// Every dataset has a string attribute "units" (SI; "1" for numbers without a unit).
+// XDMF: two files, each one temporal collection (one grid per file: meshio reads only the
+// first grid of a file, ParaView opens both together): <dir>/interface_cells.xmf,
+// "interface_cells" (Polyline / Triangle / Quadrilateral / Mixed, Center="Cell" attributes,
+// displacement_minus / _plus Center="Node"), and <dir>/interface_points.xmf,
 // "interface_points" (Polyvertex, Center="Node" attributes). 2-component arrays have
-// AttributeType "Matrix" (XDMF "Vector" means 3 components). Rank 0 rewrites the XDMF file
+// AttributeType "Matrix" (XDMF "Vector" means 3 components). Rank 0 rewrites the XDMF files
 // after every write() (temporary file + rename).
 #include "poroseam/interface_writer.hpp"
 
@@ -55,6 +66,7 @@ struct PointRecord {
   PetscInt cell;
   int iface, surface, point, num_points;
   double x[3], weight, normal[3];
+  double displacement_minus[3], displacement_plus[3];
   double gap_normal, opening, slip[2], slip_vector[3];
   double pressure, shear[2], shear_traction[3], traction[3];
   int state;
@@ -66,8 +78,9 @@ struct CellRecord {
   PetscInt cell;
   int iface, surface;
   int nodes;
-  std::vector<double> coords; // nodes x dim
-  size_t first, count;        // its points
+  std::vector<double> coords;                                // nodes x dim
+  std::vector<double> displacement_minus, displacement_plus; // nodes x 3
+  size_t first, count;                                       // its points
 };
 
 // Quantities of one output location (a cell or a point).
@@ -78,6 +91,7 @@ struct Values {
   int state = 0;
   double p3 = 0, aperture = 0, aperture_rate = 0, longitudinal_flux[3] = {0, 0, 0};
   double transversal_flux1 = 0, transversal_flux2 = 0;
+  double displacement_minus[3] = {0, 0, 0}, displacement_plus[3] = {0, 0, 0}; // points only
 };
 
 double mobilised(double pressure, const double shear[2], int t)
@@ -108,6 +122,9 @@ Values pointValues(const PointRecord &p, int t)
     v.longitudinal_flux[d] = p.longitudinal_flux[d];
   v.transversal_flux1 = p.transversal_flux1;
   v.transversal_flux2 = p.transversal_flux2;
+  for (int d = 0; d < 3; ++d)
+    v.displacement_minus[d] = p.displacement_minus[d],
+    v.displacement_plus[d] = p.displacement_plus[d];
   return v;
 }
 
@@ -146,7 +163,26 @@ struct Attribute {
   std::string name, path; // path: the dataset, or the group of per-step datasets
   int components;
   bool integer, per_step;
+  bool node = false; // on the nodes of the cell grid (the point grid has nodes only)
 };
+
+/// The "units" attribute of each dataset, by name. Areas and weights: m2 for a surface (3D,
+/// and the rings of an axisymmetric model), m per metre out of plane in plane strain.
+const char *unitsOf(const std::string &name, int dim, bool axisymmetric)
+{
+  if (name == "area" || name == "weight") return dim == 3 || axisymmetric ? "m2" : "m";
+  if (name == "geometry" || name == "gap_normal" || name == "opening" || name == "slip" ||
+      name == "slip_vector" || name == "aperture" || name == "displacement_minus" ||
+      name == "displacement_plus")
+    return "m";
+  if (name == "contact_pressure_effective" || name == "shear_stress" || name == "shear_traction" ||
+      name == "traction" || name == "interface_pressure")
+    return "Pa";
+  if (name == "aperture_rate" || name == "transversal_flux1" || name == "transversal_flux2")
+    return "m/s";
+  if (name == "longitudinal_flux") return "m2/s";
+  return "1"; // indices, ids, the normal, mobilised_friction, state
+}
 
 } // namespace
 
@@ -158,7 +194,7 @@ struct InterfaceWriter::Impl {
   int dim = 0;
   PetscViewer viewer = nullptr;
   std::string h5name = "interfaces.h5";
-  std::string xmfPath;
+  std::string xmfPath[2]; // interface_cells.xmf, interface_points.xmf
   std::vector<double> times;
 
   // Set at the first write.
@@ -174,9 +210,50 @@ struct InterfaceWriter::Impl {
                            const std::vector<PointRecord> &points);
   PetscErrorCode writeValues(const std::string &grid, const std::vector<Values> &values,
                              size_t step, double time);
+  /// displacement_minus / _plus at the nodes of the cell grid.
+  PetscErrorCode writeNodeDisplacements(const std::vector<CellRecord> &cells, size_t step,
+                                        double time);
   std::vector<Attribute> attributes(bool cells) const;
   PetscErrorCode writeXdmf();
+  const char *units(const std::string &name) const
+  {
+    return unitsOf(name, dim, scene->axisymmetric);
+  }
+  /// The names of the interfaces and of the parts (/cells/part), comma separated.
+  std::string interfaceNames() const;
+  std::string partNames() const;
+  /// Index of (interface, surface) in partNames().
+  int part(int iface, int surface) const;
 };
+
+std::string InterfaceWriter::Impl::interfaceNames() const
+{
+  std::string list;
+  for (const Interface &i : scene->interfaces)
+    list += (list.empty() ? "" : ",") + i.name;
+  return list;
+}
+
+std::string InterfaceWriter::Impl::partNames() const
+{
+  std::string list;
+  for (const Interface &i : scene->interfaces) {
+    if (i.surfaces.size() <= 1)
+      list += (list.empty() ? "" : ",") + i.name;
+    else
+      for (const std::string &surface : i.surfaces)
+        list += (list.empty() ? "" : ",") + i.name + "." + surface;
+  }
+  return list;
+}
+
+int InterfaceWriter::Impl::part(int iface, int surface) const
+{
+  int k = 0;
+  for (int i = 0; i < iface; ++i)
+    k += std::max<int>(1, static_cast<int>(scene->interfaces[i].surfaces.size()));
+  return k + (scene->interfaces[iface].surfaces.size() <= 1 ? 0 : surface);
+}
 
 PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceAssembly &mech, Vec local,
                                               const InterfaceRates &rates,
@@ -189,60 +266,81 @@ PetscErrorCode InterfaceWriter::Impl::collect(const InterfaceAssembly &mech, Vec
   PetscFunctionBeginUser;
   cells.clear();
   points.clear();
-  PetscCall(mech.visit(local, rates,
-                       [&](int iface, int surface, PetscInt cell, const InterfacePointState &st) {
-                         if (cells.empty() || cells.back().cell != cell || st.point == 0) {
-                           CellRecord c;
-                           c.cell = cell;
-                           c.iface = iface;
-                           c.surface = surface;
-                           c.nodes = st.face_vertices;
-                           if (st.face_coords)
-                             c.coords.assign(st.face_coords, st.face_coords + st.face_vertices * d);
-                           c.first = points.size();
-                           c.count = 0;
-                           if (st.point != 0 || !st.face_coords) bad = true;
-                           cells.push_back(std::move(c));
-                         }
-                         CellRecord &c = cells.back();
-                         ++c.count;
-                         PointRecord p;
-                         p.cell = cell;
-                         p.iface = iface;
-                         p.surface = surface;
-                         p.point = st.point;
-                         p.num_points = st.num_points;
-                         for (int i = 0; i < 3; ++i) {
-                           p.x[i] = i < d ? st.x[i] : 0.0;
-                           p.normal[i] = st.frame[0][i];
-                           p.traction[i] = st.traction[i];
-                           p.slip_vector[i] = 0.0;
-                           p.shear_traction[i] = 0.0;
-                         }
-                         p.weight = st.weight;
-                         p.gap_normal = st.gap_normal;
-                         p.opening = st.opening;
-                         p.pressure = st.response.contact_pressure_effective;
-                         for (int k = 0; k < 2; ++k) {
-                           p.slip[k] = k < t ? st.gap_tangential[k] : 0.0;
-                           p.shear[k] = k < t ? st.response.shear[k] : 0.0;
-                         }
-                         for (int k = 0; k < t; ++k)
-                           for (int i = 0; i < 3; ++i) {
-                             p.slip_vector[i] += p.slip[k] * st.frame[k + 1][i];
-                             p.shear_traction[i] += p.shear[k] * st.frame[k + 1][i];
-                           }
-                         p.state = static_cast<int>(st.response.state);
-                         const bool fl = st.flow;
-                         p.p3 = fl ? st.interface_pressure : 0.0;
-                         p.aperture = fl ? st.aperture : 0.0;
-                         p.aperture_rate = fl ? st.aperture_rate : 0.0;
-                         for (int i = 0; i < 3; ++i)
-                           p.longitudinal_flux[i] = fl && i < d ? st.longitudinal_flux[i] : 0.0;
-                         p.transversal_flux1 = fl ? st.transversal_flux1 : 0.0;
-                         p.transversal_flux2 = fl ? st.transversal_flux2 : 0.0;
-                         points.push_back(p);
-                       }));
+  PetscCall(mech.visit(
+      local, rates, [&](int iface, int surface, PetscInt cell, const InterfacePointState &st) {
+        if (cells.empty() || cells.back().cell != cell || st.point == 0) {
+          CellRecord c;
+          c.cell = cell;
+          c.iface = iface;
+          c.surface = surface;
+          c.nodes = st.face_vertices;
+          if (st.face_coords)
+            c.coords.assign(st.face_coords, st.face_coords + st.face_vertices * d);
+          c.displacement_minus.assign(3 * st.face_vertices, 0.0);
+          c.displacement_plus.assign(3 * st.face_vertices, 0.0);
+          if (st.face_displacement1 && st.face_displacement2)
+            for (int a = 0; a < st.face_vertices; ++a)
+              for (int i = 0; i < d; ++i) {
+                c.displacement_minus[3 * a + i] = st.face_displacement1[a * d + i];
+                c.displacement_plus[3 * a + i] = st.face_displacement2[a * d + i];
+              }
+          else
+            bad = true;
+          c.first = points.size();
+          c.count = 0;
+          if (st.point != 0 || !st.face_coords) bad = true;
+          cells.push_back(std::move(c));
+        }
+        CellRecord &c = cells.back();
+        ++c.count;
+        PointRecord p;
+        p.cell = cell;
+        p.iface = iface;
+        p.surface = surface;
+        p.point = st.point;
+        p.num_points = st.num_points;
+        for (int i = 0; i < 3; ++i) {
+          p.x[i] = i < d ? st.x[i] : 0.0;
+          p.normal[i] = st.frame[0][i];
+          p.traction[i] = st.traction[i];
+          p.slip_vector[i] = 0.0;
+          p.shear_traction[i] = 0.0;
+        }
+        p.weight = st.weight;
+        // The displacements of both faces at the point: the face's shape
+        // functions interpolate them like the gap (linear faces: the
+        // barycentric weights of x among the face's vertices).
+        for (int i = 0; i < 3; ++i)
+          p.displacement_minus[i] = p.displacement_plus[i] = 0.0;
+        if (st.face_displacement1 && st.face_displacement2 && st.phi)
+          for (int a = 0; a < st.face_vertices; ++a)
+            for (int i = 0; i < d; ++i) {
+              p.displacement_minus[i] += st.phi[a] * st.face_displacement1[a * d + i];
+              p.displacement_plus[i] += st.phi[a] * st.face_displacement2[a * d + i];
+            }
+        p.gap_normal = st.gap_normal;
+        p.opening = st.opening;
+        p.pressure = st.response.contact_pressure_effective;
+        for (int k = 0; k < 2; ++k) {
+          p.slip[k] = k < t ? st.gap_tangential[k] : 0.0;
+          p.shear[k] = k < t ? st.response.shear[k] : 0.0;
+        }
+        for (int k = 0; k < t; ++k)
+          for (int i = 0; i < 3; ++i) {
+            p.slip_vector[i] += p.slip[k] * st.frame[k + 1][i];
+            p.shear_traction[i] += p.shear[k] * st.frame[k + 1][i];
+          }
+        p.state = static_cast<int>(st.response.state);
+        const bool fl = st.flow;
+        p.p3 = fl ? st.interface_pressure : 0.0;
+        p.aperture = fl ? st.aperture : 0.0;
+        p.aperture_rate = fl ? st.aperture_rate : 0.0;
+        for (int i = 0; i < 3; ++i)
+          p.longitudinal_flux[i] = fl && i < d ? st.longitudinal_flux[i] : 0.0;
+        p.transversal_flux1 = fl ? st.transversal_flux1 : 0.0;
+        p.transversal_flux2 = fl ? st.transversal_flux2 : 0.0;
+        points.push_back(p);
+      }));
   for (const CellRecord &c : cells)
     if (c.count != static_cast<size_t>(points[c.first].num_points) || c.nodes < 2 || c.nodes > 4)
       bad = true;
@@ -292,7 +390,7 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
 
   // Cells.
   std::vector<PetscScalar> xyz, area, normal;
-  std::vector<PetscInt> topo, npc, iface, surface;
+  std::vector<PetscInt> topo, npc, iface, surface, part;
   const bool mixed = min_nodes != max_nodes;
   PetscInt node = offset[1], mixed_local = 0;
   for (const CellRecord &c : cells) {
@@ -307,6 +405,7 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
     npc.push_back(c.nodes);
     iface.push_back(c.iface);
     surface.push_back(c.surface);
+    part.push_back(this->part(c.iface, c.surface));
     double a = 0.0;
     for (size_t i = c.first; i < c.first + c.count; ++i)
       a += points[i].weight;
@@ -316,17 +415,19 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
   }
   PetscCall(MPIU_Allreduce(&mixed_local, &mixed_length, 1, MPIU_INT, MPI_SUM, comm));
   if (!mixed) mixed_length = 0;
-  PetscCall(xdmf::writeReals(viewer, comm, "/cells", "geometry", dim, xyz, nullptr));
-  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "topology", mixed ? 1 : max_nodes, topo));
-  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "nodes_per_cell", 1, npc));
-  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "interface", 1, iface));
-  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "surface", 1, surface));
-  PetscCall(xdmf::writeReals(viewer, comm, "/cells", "area", 1, area, nullptr));
-  PetscCall(xdmf::writeReals(viewer, comm, "/cells", "normal", 3, normal, nullptr));
+  PetscCall(
+      xdmf::writeReals(viewer, comm, "/cells", "geometry", dim, xyz, units("geometry"), nullptr));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "topology", mixed ? 1 : max_nodes, topo, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "nodes_per_cell", 1, npc, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "interface", 1, iface, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "surface", 1, surface, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/cells", "part", 1, part, "1"));
+  PetscCall(xdmf::writeReals(viewer, comm, "/cells", "area", 1, area, units("area"), nullptr));
+  PetscCall(xdmf::writeReals(viewer, comm, "/cells", "normal", 3, normal, "1", nullptr));
 
   // Integration points.
   std::vector<PetscScalar> px, weight, pnormal;
-  std::vector<PetscInt> ptopo, piface, psurface, pcell, ppoint;
+  std::vector<PetscInt> ptopo, piface, psurface, ppart, pcell, ppoint;
   for (size_t ci = 0; ci < cells.size(); ++ci) {
     const CellRecord &c = cells[ci];
     for (size_t i = c.first; i < c.first + c.count; ++i) {
@@ -336,6 +437,7 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
       ptopo.push_back(offset[2] + static_cast<PetscInt>(i));
       piface.push_back(p.iface);
       psurface.push_back(p.surface);
+      ppart.push_back(this->part(p.iface, p.surface));
       pcell.push_back(offset[0] + static_cast<PetscInt>(ci));
       ppoint.push_back(p.point);
       weight.push_back(p.weight);
@@ -343,14 +445,23 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
         pnormal.push_back(p.normal[d]);
     }
   }
-  PetscCall(xdmf::writeReals(viewer, comm, "/points", "geometry", dim, px, nullptr));
-  PetscCall(xdmf::writeInts(viewer, comm, "/points", "topology", 1, ptopo));
-  PetscCall(xdmf::writeInts(viewer, comm, "/points", "interface", 1, piface));
-  PetscCall(xdmf::writeInts(viewer, comm, "/points", "surface", 1, psurface));
-  PetscCall(xdmf::writeInts(viewer, comm, "/points", "cell", 1, pcell));
-  PetscCall(xdmf::writeInts(viewer, comm, "/points", "point", 1, ppoint));
-  PetscCall(xdmf::writeReals(viewer, comm, "/points", "weight", 1, weight, nullptr));
-  PetscCall(xdmf::writeReals(viewer, comm, "/points", "normal", 3, pnormal, nullptr));
+  PetscCall(
+      xdmf::writeReals(viewer, comm, "/points", "geometry", dim, px, units("geometry"), nullptr));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "topology", 1, ptopo, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "interface", 1, piface, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "surface", 1, psurface, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "part", 1, ppart, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "cell", 1, pcell, "1"));
+  PetscCall(xdmf::writeInts(viewer, comm, "/points", "point", 1, ppoint, "1"));
+  PetscCall(
+      xdmf::writeReals(viewer, comm, "/points", "weight", 1, weight, units("weight"), nullptr));
+  PetscCall(xdmf::writeReals(viewer, comm, "/points", "normal", 3, pnormal, "1", nullptr));
+  // The names behind the indices, where a user looking at the ids finds them.
+  for (const char *group : {"/cells", "/points"}) {
+    PetscCall(
+        xdmf::writeText(viewer, std::string(group) + "/interface", "names", interfaceNames()));
+    PetscCall(xdmf::writeText(viewer, std::string(group) + "/part", "names", partNames()));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -374,50 +485,60 @@ PetscErrorCode InterfaceWriter::Impl::writeValues(const std::string &grid,
       a.insert(a.end(), get(v), get(v) + n);
     return a;
   };
+  auto real = [&](const char *name, int bs, const std::vector<PetscScalar> &v) {
+    return xdmf::writeReals(viewer, comm, base + name, s, bs, v, units(name), &time);
+  };
 
   PetscFunctionBeginUser;
-  PetscCall(xdmf::writeReals(viewer, comm, base + "gap_normal", s, 1, scalar(&Values::gap_normal),
-                             &time));
+  PetscCall(real("gap_normal", 1, scalar(&Values::gap_normal)));
+  PetscCall(real("opening", 1, scalar(&Values::opening)));
+  PetscCall(real("slip", t, vec([](const Values &v) -> const double * { return v.slip; }, t)));
+  PetscCall(real("slip_vector", 3,
+                 vec([](const Values &v) -> const double * { return v.slip_vector; }, 3)));
+  PetscCall(real("contact_pressure_effective", 1, scalar(&Values::pressure)));
   PetscCall(
-      xdmf::writeReals(viewer, comm, base + "opening", s, 1, scalar(&Values::opening), &time));
-  PetscCall(xdmf::writeReals(viewer, comm, base + "slip", s, t,
-                             vec([](const Values &v) -> const double * { return v.slip; }, t),
-                             &time));
-  PetscCall(xdmf::writeReals(
-      viewer, comm, base + "slip_vector", s, 3,
-      vec([](const Values &v) -> const double * { return v.slip_vector; }, 3), &time));
-  PetscCall(xdmf::writeReals(viewer, comm, base + "contact_pressure_effective", s, 1,
-                             scalar(&Values::pressure), &time));
-  PetscCall(xdmf::writeReals(viewer, comm, base + "shear_stress", s, t,
-                             vec([](const Values &v) -> const double * { return v.shear; }, t),
-                             &time));
-  PetscCall(xdmf::writeReals(
-      viewer, comm, base + "shear_traction", s, 3,
-      vec([](const Values &v) -> const double * { return v.shear_traction; }, 3), &time));
-  PetscCall(xdmf::writeReals(viewer, comm, base + "traction", s, 3,
-                             vec([](const Values &v) -> const double * { return v.traction; }, 3),
-                             &time));
-  PetscCall(xdmf::writeReals(viewer, comm, base + "mobilised_friction", s, 1,
-                             scalar(&Values::mobilised), &time));
+      real("shear_stress", t, vec([](const Values &v) -> const double * { return v.shear; }, t)));
+  PetscCall(real("shear_traction", 3,
+                 vec([](const Values &v) -> const double * { return v.shear_traction; }, 3)));
+  PetscCall(
+      real("traction", 3, vec([](const Values &v) -> const double * { return v.traction; }, 3)));
+  PetscCall(real("mobilised_friction", 1, scalar(&Values::mobilised)));
   std::vector<PetscInt> state;
   for (const Values &v : values)
     state.push_back(v.state);
-  PetscCall(xdmf::writeInts(viewer, comm, base + "state", s, 1, state, &time));
+  PetscCall(xdmf::writeInts(viewer, comm, base + "state", s, 1, state, units("state"), &time));
   if (flow) {
-    PetscCall(xdmf::writeReals(viewer, comm, base + "interface_pressure", s, 1, scalar(&Values::p3),
-                               &time));
-    PetscCall(
-        xdmf::writeReals(viewer, comm, base + "aperture", s, 1, scalar(&Values::aperture), &time));
-    PetscCall(xdmf::writeReals(viewer, comm, base + "aperture_rate", s, 1,
-                               scalar(&Values::aperture_rate), &time));
-    PetscCall(xdmf::writeReals(
-        viewer, comm, base + "longitudinal_flux", s, 3,
-        vec([](const Values &v) -> const double * { return v.longitudinal_flux; }, 3), &time));
-    PetscCall(xdmf::writeReals(viewer, comm, base + "transversal_flux1", s, 1,
-                               scalar(&Values::transversal_flux1), &time));
-    PetscCall(xdmf::writeReals(viewer, comm, base + "transversal_flux2", s, 1,
-                               scalar(&Values::transversal_flux2), &time));
+    PetscCall(real("interface_pressure", 1, scalar(&Values::p3)));
+    PetscCall(real("aperture", 1, scalar(&Values::aperture)));
+    PetscCall(real("aperture_rate", 1, scalar(&Values::aperture_rate)));
+    PetscCall(real("longitudinal_flux", 3,
+                   vec([](const Values &v) -> const double * { return v.longitudinal_flux; }, 3)));
+    PetscCall(real("transversal_flux1", 1, scalar(&Values::transversal_flux1)));
+    PetscCall(real("transversal_flux2", 1, scalar(&Values::transversal_flux2)));
   }
+  if (grid == "points") {
+    PetscCall(real("displacement_minus", 3,
+                   vec([](const Values &v) -> const double * { return v.displacement_minus; }, 3)));
+    PetscCall(real("displacement_plus", 3,
+                   vec([](const Values &v) -> const double * { return v.displacement_plus; }, 3)));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceWriter::Impl::writeNodeDisplacements(const std::vector<CellRecord> &cells,
+                                                             size_t step, double time)
+{
+  const std::string s = std::to_string(step);
+  std::vector<PetscScalar> minus, plus;
+  PetscFunctionBeginUser;
+  for (const CellRecord &c : cells) {
+    minus.insert(minus.end(), c.displacement_minus.begin(), c.displacement_minus.end());
+    plus.insert(plus.end(), c.displacement_plus.begin(), c.displacement_plus.end());
+  }
+  PetscCall(xdmf::writeReals(viewer, comm, "/cells/fields/displacement_minus", s, 3, minus,
+                             units("displacement_minus"), &time));
+  PetscCall(xdmf::writeReals(viewer, comm, "/cells/fields/displacement_plus", s, 3, plus,
+                             units("displacement_plus"), &time));
   PetscFunctionReturn(0);
 }
 
@@ -446,9 +567,13 @@ std::vector<Attribute> InterfaceWriter::Impl::attributes(bool cells) const
     a.push_back({"transversal_flux1", g + "fields/transversal_flux1", 1, false, true});
     a.push_back({"transversal_flux2", g + "fields/transversal_flux2", 1, false, true});
   }
+  // On the nodes: the faces' displacements, to warp the interface with the bulk.
+  a.push_back({"displacement_minus", g + "fields/displacement_minus", 3, false, true, true});
+  a.push_back({"displacement_plus", g + "fields/displacement_plus", 3, false, true, true});
   // Constant.
   a.push_back({"interface", g + "interface", 1, true, false});
   a.push_back({"surface", g + "surface", 1, true, false});
+  a.push_back({"part", g + "part", 1, true, false});
   a.push_back({"normal", g + "normal", 3, false, false});
   if (cells) {
     a.push_back({"area", g + "area", 1, false, false});
@@ -463,18 +588,18 @@ std::vector<Attribute> InterfaceWriter::Impl::attributes(bool cells) const
 PetscErrorCode InterfaceWriter::Impl::writeXdmf()
 {
   PetscMPIInt rank;
-  std::ostringstream x;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    const bool have = mesh_written && num_cells > 0;
-    const std::string geomType = dim == 3 ? "XYZ" : "XY";
-    x << "<?xml version=\"1.0\" ?>\n"
-      << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-      << "<Xdmf Version=\"3.0\">\n"
-      << "  <Domain>\n";
-    for (int grid = 0; grid < 2; ++grid) {
+  for (int grid = 0; grid < 2; ++grid) {
+    std::ostringstream x;
+    if (rank == 0) {
+      const bool have = mesh_written && num_cells > 0;
+      const std::string geomType = dim == 3 ? "XYZ" : "XY";
+      x << "<?xml version=\"1.0\" ?>\n"
+        << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+        << "<Xdmf Version=\"3.0\">\n"
+        << "  <Domain>\n";
       const bool cells = grid == 0;
       const std::string gname = cells ? "interface_cells" : "interface_points";
       const PetscInt n = cells ? num_cells : num_points;
@@ -516,21 +641,22 @@ PetscErrorCode InterfaceWriter::Impl::writeXdmf()
                               : a.components == 3 ? "Vector"
                                                   : "Matrix";
           // Integers are [N, bs] even for bs = 1 (ISView).
-          const std::string dims =
-              a.components == 1 && !a.integer ? ns : ns + " " + std::to_string(a.components);
           const std::string path = a.per_step ? a.path + "/" + std::to_string(s) : a.path;
+          const std::string rows = a.node && cells ? std::to_string(num_nodes) : ns;
+          const std::string dims =
+              a.components == 1 && !a.integer ? rows : rows + " " + std::to_string(a.components);
           x << "        <Attribute Name=\"" << a.name << "\" AttributeType=\"" << atype
-            << "\" Center=\"" << (cells ? "Cell" : "Node") << "\">\n          "
+            << "\" Center=\"" << (cells && !a.node ? "Cell" : "Node") << "\">\n          "
             << xdmf::dataItem(dims, a.integer, h5name, path) << "\n        </Attribute>\n";
         }
         x << "      </Grid>\n";
       }
       x << "    </Grid>\n";
+      x << "  </Domain>\n"
+        << "</Xdmf>\n";
     }
-    x << "  </Domain>\n"
-      << "</Xdmf>\n";
+    PetscCall(xdmf::replaceFile(comm, xmfPath[grid], x.str(), kWho));
   }
-  PetscCall(xdmf::replaceFile(comm, xmfPath, x.str(), kWho));
   PetscFunctionReturn(0);
 }
 
@@ -563,7 +689,9 @@ PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const st
              "InterfaceWriter: dimension %d not supported", im.dim);
   PetscCall(xdmf::createDirectory(comm, dir, kWho));
   const std::string prefix = dir.empty() ? std::string("interfaces") : dir + "/interfaces";
-  im.xmfPath = prefix + ".xmf";
+  const std::string folder = dir.empty() ? std::string() : dir + "/";
+  im.xmfPath[0] = folder + "interface_cells.xmf";
+  im.xmfPath[1] = folder + "interface_points.xmf";
   // Resuming: the mesh is written again at the first write (PETSc's HDF5 viewer overwrites
   // existing datasets), values after the checkpoint's last time are overwritten.
   if (resume) im.times = *resume;
@@ -608,6 +736,7 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
     const size_t step = im.times.size();
     PetscCall(im.writeValues("cells", cv, step, time));
     PetscCall(im.writeValues("points", pv, step, time));
+    PetscCall(im.writeNodeDisplacements(cells, step, time));
     PetscCall(PetscViewerFlush(im.viewer));
   }
   im.times.push_back(time);

@@ -1,5 +1,6 @@
-// timeseries.csv (split from the time loop in simulation.cpp): its columns, the rows kept on a
-// restart, and the number formats that the tests compare bit for bit.
+// timeseries.csv (split from the time loop in simulation.cpp): its columns and their units
+// (timeseries.csv.units), the rows kept on a restart, and the number formats that the tests
+// compare bit for bit.
 
 #include "poroseam/time_series.hpp"
 
@@ -10,24 +11,33 @@
 
 namespace poroseam {
 
-std::string TimeSeries::header(const Scene &scene)
+std::vector<TimeSeries::Column> TimeSeries::columns(const Scene &scene)
 {
-  std::ostringstream h;
+  std::vector<Column> c;
   const char *axis[3] = {"x", "y", "z"};
-  h << "step,time,dt,load,newton_its,ksp_its,rejected,wall_time";
+  // Plane strain: forces and flows per metre out of plane; axisymmetric: the full circle.
+  const bool per_metre = scene.dim == 2 && !scene.axisymmetric;
+  const std::string force = per_metre ? "N/m" : "N", flow = per_metre ? "m2/s" : "m3/s",
+                    volume = per_metre ? "m2" : "m3";
+  c = {{"step", "1"},       {"time", "s"},    {"dt", "s"},       {"load", "1"},
+       {"newton_its", "1"}, {"ksp_its", "1"}, {"rejected", "1"}, {"wall_time", "s"}};
   for (const auto &b : scene.boundaries) {
     for (int d = 0; d < scene.dim; ++d)
-      h << "," << b.name << ".F" << axis[d];
-    if (scene.hasPressure()) h << "," << b.name << ".flux";
-    if (scene.hasInterfacePressure()) h << "," << b.name << ".interface_outflow";
+      c.push_back({b.name + ".F" + axis[d], force});
+    if (scene.hasPressure()) c.push_back({b.name + ".flux", flow});
+    if (scene.hasInterfacePressure()) c.push_back({b.name + ".interface_outflow", flow});
   }
   // Interface blocks as interfaceResultants writes them, then the interface outflows.
   auto block = [&](const Interface &i, const std::string &name) {
     for (int d = 0; d < scene.dim; ++d)
-      h << "," << name << ".F" << axis[d];
-    if (i.flow)
-      for (const char *q : {"flux1", "flux2", "storage", "storage_rate", "p3_force"})
-        h << "," << name << "." << q;
+      c.push_back({name + ".F" + axis[d], force});
+    if (i.flow) {
+      c.push_back({name + ".flux1", flow});
+      c.push_back({name + ".flux2", flow});
+      c.push_back({name + ".storage", volume});
+      c.push_back({name + ".storage_rate", flow});
+      c.push_back({name + ".p3_force", force});
+    }
   };
   for (const auto &i : scene.interfaces) {
     block(i, i.name);
@@ -36,13 +46,21 @@ std::string TimeSeries::header(const Scene &scene)
         block(i, i.name + "." + s);
   }
   for (const auto &i : scene.interfaces)
-    if (i.flow) h << "," << i.name << ".outflow";
+    if (i.flow) c.push_back({i.name + ".outflow", flow});
   for (const auto &p : scene.probes) {
     for (int d = 0; d < scene.dim; ++d)
-      h << "," << p.name << ".u" << axis[d];
-    h << "," << p.name << ".p";
+      c.push_back({p.name + ".u" + axis[d], "m"});
+    c.push_back({p.name + ".p", "Pa"});
   }
-  return h.str();
+  return c;
+}
+
+std::string TimeSeries::header(const Scene &scene)
+{
+  std::string h;
+  for (const Column &c : columns(scene))
+    h += (h.empty() ? "" : ",") + c.name;
+  return h;
 }
 
 PetscErrorCode TimeSeries::open(MPI_Comm comm, const Scene &scene, const std::string &dir,
@@ -83,6 +101,17 @@ PetscErrorCode TimeSeries::open(MPI_Comm comm, const Scene &scene, const std::st
       status = 1;
     else if (resume_step < 0)
       std::fprintf(file_, "%s\n", head.c_str());
+  }
+  if (rank == 0 && status == 0) {
+    // The unit of every column, beside the file so that readers of the CSV see no change.
+    std::ofstream out(path + ".units.tmp", std::ios::trunc);
+    out << "column,unit\n";
+    for (const Column &c : columns(scene))
+      out << c.name << "," << c.unit << "\n";
+    out.close();
+    std::error_code failed;
+    if (out) std::filesystem::rename(path + ".units.tmp", path + ".units", failed);
+    if (!out || failed) status = 1;
   }
   PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
   PetscCheck(status != 1, comm, PETSC_ERR_FILE_OPEN, "cannot write %s (option -output_dir)",

@@ -62,7 +62,8 @@ PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::st
 
 PetscErrorCode writeReals(PetscViewer viewer, MPI_Comm comm, const std::string &group,
                           const std::string &name, PetscInt bs,
-                          const std::vector<PetscScalar> &values, const double *time)
+                          const std::vector<PetscScalar> &values, const char *units,
+                          const double *time)
 {
   Vec v;
   PetscScalar *a;
@@ -83,11 +84,15 @@ PetscErrorCode writeReals(PetscViewer viewer, MPI_Comm comm, const std::string &
   PetscCall(PetscViewerHDF5PushGroup(viewer, group.c_str()));
   PetscCall(VecView(v, viewer));
   PetscCall(PetscViewerHDF5PopGroup(viewer));
-  if (time) {
+  {
     const std::string path = group + "/" + name;
-    PetscReal t = static_cast<PetscReal>(*time);
 
-    PetscCall(PetscViewerHDF5WriteAttribute(viewer, path.c_str(), "time", PETSC_REAL, &t));
+    PetscCall(writeText(viewer, path, "units", units));
+    if (time) {
+      PetscReal t = static_cast<PetscReal>(*time);
+
+      PetscCall(PetscViewerHDF5WriteAttribute(viewer, path.c_str(), "time", PETSC_REAL, &t));
+    }
   }
   PetscCall(VecDestroy(&v));
   PetscFunctionReturn(0);
@@ -95,7 +100,7 @@ PetscErrorCode writeReals(PetscViewer viewer, MPI_Comm comm, const std::string &
 
 PetscErrorCode writeInts(PetscViewer viewer, MPI_Comm comm, const std::string &group,
                          const std::string &name, PetscInt bs, const std::vector<PetscInt> &values,
-                         const double *time)
+                         const char *units, const double *time)
 {
   IS is;
   const PetscInt n = static_cast<PetscInt>(values.size());
@@ -110,13 +115,26 @@ PetscErrorCode writeInts(PetscViewer viewer, MPI_Comm comm, const std::string &g
   PetscCall(PetscViewerHDF5PushGroup(viewer, group.c_str()));
   PetscCall(ISView(is, viewer));
   PetscCall(PetscViewerHDF5PopGroup(viewer));
-  if (time) {
+  {
     const std::string path = group + "/" + name;
-    PetscReal t = static_cast<PetscReal>(*time);
 
-    PetscCall(PetscViewerHDF5WriteAttribute(viewer, path.c_str(), "time", PETSC_REAL, &t));
+    PetscCall(writeText(viewer, path, "units", units));
+    if (time) {
+      PetscReal t = static_cast<PetscReal>(*time);
+
+      PetscCall(PetscViewerHDF5WriteAttribute(viewer, path.c_str(), "time", PETSC_REAL, &t));
+    }
   }
   PetscCall(ISDestroy(&is));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode writeText(PetscViewer viewer, const std::string &path, const char *attribute,
+                         const std::string &value)
+{
+  PetscFunctionBeginUser;
+  PetscCall(
+      PetscViewerHDF5WriteAttribute(viewer, path.c_str(), attribute, PETSC_STRING, value.c_str()));
   PetscFunctionReturn(0);
 }
 

@@ -23,16 +23,22 @@ PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::st
                            const char *who);
 
 /// Collective: writes the rank-ordered concatenation of every rank's `values` (bs values per
-/// row) as `<group>/<name>`, shape [N] when bs == 1, else [N, bs] (PETSc Vec, doubles). With
-/// `time` given, the dataset carries the attribute "time".
+/// row) as `<group>/<name>`, shape [N] when bs == 1, else [N, bs] (PETSc Vec, doubles). The
+/// dataset carries the string attribute "units" (SI, UDUNITS spelling: "m", "Pa", "m2/s";
+/// "1" for dimensionless numbers and indices) and, with `time` given, the attribute "time".
 PetscErrorCode writeReals(PetscViewer viewer, MPI_Comm comm, const std::string &group,
                           const std::string &name, PetscInt bs,
-                          const std::vector<PetscScalar> &values, const double *time);
+                          const std::vector<PetscScalar> &values, const char *units,
+                          const double *time);
 
 /// Same for PetscInt values (PETSc IS): shape [N, bs], also when bs == 1 (PETSc's ISView).
 PetscErrorCode writeInts(PetscViewer viewer, MPI_Comm comm, const std::string &group,
                          const std::string &name, PetscInt bs, const std::vector<PetscInt> &values,
-                         const double *time = nullptr);
+                         const char *units, const double *time = nullptr);
+
+/// Collective: the string attribute `attribute` = `value` on the dataset or group `path`.
+PetscErrorCode writeText(PetscViewer viewer, const std::string &path, const char *attribute,
+                         const std::string &value);
 
 /// `<DataItem Dimensions="dims" NumberType=... Precision=... Format="HDF">file:path</DataItem>`
 /// (no indentation, no newline). `integer` selects Int with sizeof(PetscInt), else Float 8.

@@ -324,8 +324,11 @@ PetscErrorCode clearEarlierRun(MPI_Comm comm, const std::string &dir)
   if (rank == 0) {
     namespace fs = std::filesystem;
     std::error_code ignored;
+    // interfaces.xmf: the single index of earlier versions, now interface_cells.xmf and
+    // interface_points.xmf.
     for (const char *name :
-         {"fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf", "timeseries.csv"})
+         {"fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf", "interface_cells.xmf",
+          "interface_points.xmf", "timeseries.csv", "timeseries.csv.units"})
       fs::remove(fs::path(dir) / name, ignored);
     const fs::path checkpoints = fs::path(dir) / "checkpoints";
     if (fs::is_directory(checkpoints, ignored)) {

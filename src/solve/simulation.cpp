@@ -116,7 +116,9 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
                            (int)rejected, wall},
                    resultants, interface, probes);
   if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0) {
-    PetscCall(run.fields.write(t, local, run.initial));
+    CellFields cells;
+    PetscCall(run.problem.cellFields(local, cells));
+    PetscCall(run.fields.write(t, local, run.initial, &cells));
     PetscCall(
         run.interface_fields.write(t, run.problem.interfaces(), local, InterfaceRates{rate, dt}));
   }
@@ -456,6 +458,13 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   if (run.scene.output_every > 0) {
     const std::vector<double> *times = restart.restart ? &resumed.output_times : nullptr;
     PetscCall(run.fields.open(run.dm, run.scene.output_dir, "fields", times));
+    std::vector<PetscInt> cells;
+    std::vector<int> regions;
+    std::vector<std::string> names;
+    run.problem.cellRegions(cells, regions);
+    for (const Region &r : run.scene.regions)
+      names.push_back(r.name);
+    PetscCall(run.fields.writeRegions(cells, regions, names));
     PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir, times));
   }
   PetscCall(endLogEvent(run.events.output));

@@ -8,7 +8,12 @@
     out.connectivity     # (Nc, nodes per cell) 0-based vertex indices (XDMF order)
     out.topology_type    # "Triangle", "Quadrilateral", "Tetrahedron" or "Hexahedron"
     out.fields[i]        # dict name -> array for time i, e.g. "displacement" (Nv, 3),
-                         # "pressure" (Nv,), "excess_pressure" (Nv,)
+                         # "pressure" (Nv,), "excess_pressure" (Nv,) (NaN at vertices of
+                         # non-porous regions only)
+    out.cell_fields[i]   # dict name -> per-cell array for time i: "region" (Nc,),
+                         # "effective_stress", "total_stress", "strain" (Nc, 3, 3)
+    out.region_names     # the names behind the region ids
+    out.units            # dict dataset name -> its "units" attribute
 
 Command line: fields_reader.py <output_dir> [basename]  validates and prints a summary; the
 exit status is non-zero on any inconsistency.
@@ -36,6 +41,9 @@ class Fields:
         self.connectivity = None
         self.topology_type = None
         self.fields = []
+        self.cell_fields = []
+        self.region_names = []
+        self.units = {}
 
     def __repr__(self):
         return "Fields(%d times, %d vertices, %d %s cells, fields %s)" % (
@@ -51,8 +59,9 @@ def _dims(text):
     return tuple(int(x) for x in text.split())
 
 
-def _read_item(item, xmf_dir, h5files, context):
-    """Reads an HDF DataItem, checking that the dataset exists with the declared dimensions."""
+def _read_item(item, xmf_dir, h5files, context, allow_nan=False, attrs=None):
+    """Reads an HDF DataItem, checking that the dataset exists with the declared dimensions and
+    has a "units" attribute; `attrs` (a dict), when given, receives the dataset's attributes."""
     if item is None:
         raise FieldsError("%s: missing DataItem" % context)
     if item.get("Format", "XML") != "HDF":
@@ -72,6 +81,10 @@ def _read_item(item, xmf_dir, h5files, context):
     data = h5[path]
     if not isinstance(data, h5py.Dataset):
         raise FieldsError("%s: %s is not a dataset" % (context, path))
+    if "units" not in data.attrs:
+        raise FieldsError("%s: %s has no 'units' attribute" % (context, path))
+    if attrs is not None:
+        attrs.update({k: (v.decode() if isinstance(v, bytes) else v) for k, v in data.attrs.items()})
     declared = _dims(item.get("Dimensions", ""))
     if tuple(data.shape) != declared:
         raise FieldsError(
@@ -81,7 +94,7 @@ def _read_item(item, xmf_dir, h5files, context):
     number_type = item.get("NumberType", "Float")
     if number_type in ("Int", "UInt") and not np.issubdtype(values.dtype, np.integer):
         raise FieldsError("%s: %s is %s, declared %s" % (context, path, values.dtype, number_type))
-    if not np.all(np.isfinite(values)):
+    if not np.all(np.isfinite(values) | (allow_nan & np.isnan(values))):
         raise FieldsError("%s: %s has non-finite values" % (context, path))
     return values
 
@@ -163,14 +176,35 @@ def read_fields(output_dir, basename="fields"):
                     continue  # mesh only, no time written yet
                 raise FieldsError("%s: missing Time" % ctx)
             times.append(float(time.get("Value")))
-            fields = {}
+            fields, cell_fields = {}, {}
             for a in attrs:
                 name = a.get("Name")
                 actx = "%s attribute %s" % (ctx, name)
-                if a.get("Center", "Node") != "Node":
-                    raise FieldsError("%s: Center is not Node" % actx)
-                values = _read_item(_child(a, "DataItem"), output_dir, h5files, actx)
+                meta = {}
+                values = _read_item(
+                    _child(a, "DataItem"), output_dir, h5files, actx,
+                    allow_nan=name in ("pressure", "excess_pressure"), attrs=meta,
+                )
+                out.units[name] = meta["units"]
                 atype = a.get("AttributeType", "Scalar")
+                if a.get("Center", "Node") == "Cell":
+                    nc = len(cells)
+                    if atype == "Scalar" and values.shape in ((nc,), (nc, 1)):
+                        values = values.reshape(nc)
+                    elif atype == "Tensor" and values.shape == (nc, 9):
+                        values = values.reshape(nc, 3, 3)
+                    else:
+                        raise FieldsError("%s: cell %s of shape %s" % (actx, atype, values.shape))
+                    if name == "region":
+                        out.region_names = meta.get("names", "").split(",")
+                        if values.min() < 0 or values.max() >= len(out.region_names):
+                            raise FieldsError("%s: region ids outside the %d names" % (actx, len(out.region_names)))
+                    if name in cell_fields:
+                        raise FieldsError("%s: duplicate attribute" % actx)
+                    cell_fields[name] = values
+                    continue
+                if a.get("Center", "Node") != "Node":
+                    raise FieldsError("%s: Center is neither Node nor Cell" % actx)
                 expected = (nv, 3) if atype == "Vector" else (nv,)
                 if atype not in ("Vector", "Scalar") or values.shape != expected:
                     raise FieldsError("%s: %s of shape %s" % (actx, atype, values.shape))
@@ -183,7 +217,10 @@ def read_fields(output_dir, basename="fields"):
                 raise FieldsError("%s: pressure without excess_pressure or vice versa" % ctx)
             if out.fields and sorted(fields) != sorted(out.fields[0]):
                 raise FieldsError("%s: fields %s differ from the first time" % (ctx, sorted(fields)))
+            if out.cell_fields and sorted(cell_fields) != sorted(out.cell_fields[0]):
+                raise FieldsError("%s: cell fields %s differ from the first time" % (ctx, sorted(cell_fields)))
             out.fields.append(fields)
+            out.cell_fields.append(cell_fields)
     finally:
         for f in h5files.values():
             f.close()
@@ -209,9 +246,15 @@ def main(argv):
         % (len(out.coordinates), out.coordinates.shape[1], len(out.connectivity), out.topology_type)
     )
     print("  %d times: %s" % (len(out.times), " ".join("%g" % t for t in out.times)))
-    for name in sorted(out.fields[0]) if out.fields else []:
-        last = out.fields[-1][name]
-        print("  %-16s shape %-10s last time: min %.6g max %.6g" % (name, last.shape, last.min(), last.max()))
+    for per_time in (out.fields, out.cell_fields):
+        for name in sorted(per_time[0]) if per_time else []:
+            last = per_time[-1][name]
+            print(
+                "  %-16s shape %-10s [%s] last time: min %.6g max %.6g"
+                % (name, last.shape, out.units[name], np.nanmin(last), np.nanmax(last))
+            )
+    if out.region_names:
+        print("  regions: %s" % ", ".join("%d %s" % r for r in enumerate(out.region_names)))
     return 0
 
 

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Reader and validator for poroseam's interface output (interfaces.xmf + interfaces.h5).
+"""Reader and validator for poroseam's interface output (interface_cells.xmf +
+interface_points.xmf, one grid each, over interfaces.h5).
 
     from interface_reader import read_interfaces
     out = read_interfaces("run/output")
@@ -9,11 +10,14 @@
     out.cell_coordinates   # (Nn, dim) cell node coordinates (nodes duplicated per cell)
     out.cells              # list of Nc int arrays: node indices of each cell (face order)
     out.connectivity       # (Nc, n) array when every cell has n nodes, else None
-    out.cell_fields[i]     # dict name -> array for time i (cell values: point averages)
+    out.cell_fields[i]     # dict name -> array for time i (cell values: point averages;
+                           # displacement_minus / _plus (Nn, 3) at the cell nodes)
     out.point_coordinates  # (Np, dim) integration point positions
     out.point_fields[i]    # dict name -> array for time i (integration point values)
     out.has_flow           # True when the hydraulic fields (FLOW_FIELDS) are present
-  Constant data (interface, surface, normal, area; points: cell, point, weight, ...) are in
+  out.units[name]        # the "units" attribute of each dataset, by attribute name
+  out.interface_names, out.part_names  # the names behind the interface and part ids
+  Constant data (interface, surface, part, normal, area; points: cell, point, weight, ...) are in
   every time's dict too. Vectors are (N, 3); 2-component arrays (slip and shear_stress in 3D)
   are (N, 2); scalars (N,). The hydraulic fields (interface_pressure, aperture, aperture_rate,
   longitudinal_flux (N, 3), transversal_flux1, transversal_flux2) are written only when some
@@ -33,7 +37,8 @@ import numpy as np
 NODES_PER_CELL = {"Polyline": 2, "Triangle": 3, "Quadrilateral": 4}
 MIXED_CODES = {4: 3, 5: 4}  # XDMF Mixed: Triangle, Quadrilateral
 GEOMETRY_DIM = {"XY": 2, "XYZ": 3}
-COLLECTIONS = ("interface_cells", "interface_points")
+COLLECTIONS = ("interface_cells", "interface_points")  # each in <name>.xmf
+NODE_FIELDS = ("displacement_minus", "displacement_plus")  # on the nodes of the cell grid
 TIME_FIELDS = (
     "gap_normal",
     "opening",
@@ -45,6 +50,8 @@ TIME_FIELDS = (
     "traction",
     "mobilised_friction",
     "state",
+    "displacement_minus",
+    "displacement_plus",
 )
 # Written only when some interface of the scene has flow: all or none of them.
 FLOW_FIELDS = (
@@ -73,6 +80,9 @@ class Interfaces:
         self.point_coordinates = None
         self.point_fields = []
         self.has_flow = False
+        self.units = {}
+        self.interface_names = []
+        self.part_names = []
 
     @property
     def num_cells(self):
@@ -127,6 +137,8 @@ def _read_item(item, xmf_dir, h5files, context):
     data = h5[path]
     if not isinstance(data, h5py.Dataset):
         raise InterfaceOutputError("%s: %s is not a dataset" % (context, path))
+    if "units" not in data.attrs:
+        raise InterfaceOutputError("%s: %s has no 'units' attribute" % (context, path))
     declared = _dims(item.get("Dimensions", ""))
     if tuple(data.shape) != declared:
         raise InterfaceOutputError(
@@ -229,15 +241,24 @@ def _read_collection(collection, output_dir, h5files, cells_grid, out, xmf):
         ):
             raise InterfaceOutputError("%s: mesh differs from the first grid" % ctx)
 
-        center = "Cell" if cells_grid else "Node"
-        count = n
         fields = {}
         for a in _children(grid, "Attribute"):
             aname = a.get("Name")
             actx = "%s attribute %s" % (ctx, aname)
+            on_nodes = cells_grid and aname in NODE_FIELDS
+            center = "Cell" if cells_grid and not on_nodes else "Node"
+            count = nodes if on_nodes else n
             if a.get("Center", "Node") != center:
                 raise InterfaceOutputError("%s: Center is not %s" % (actx, center))
             values = _read_item(_child(a, "DataItem"), output_dir, h5files, actx)
+            ref = _child(a, "DataItem").text.strip().split(":", 1)
+            fpath = ref[0] if os.path.isabs(ref[0]) else os.path.join(output_dir, ref[0])
+            out.units[aname] = h5files[fpath][ref[1]].attrs["units"].decode()
+            if aname in ("interface", "part"):
+                names = h5files[fpath][ref[1]].attrs.get("names")
+                if names is None:
+                    raise InterfaceOutputError("%s: no 'names' attribute" % actx)
+                setattr(out, aname + "_names", names.decode().split(","))
             atype = a.get("AttributeType", "Scalar")
             expected = _expected_shape(atype, count, actx)
             if atype == "Scalar" and values.ndim == 2 and values.shape[1] == 1:
@@ -265,7 +286,7 @@ def _read_collection(collection, output_dir, h5files, cells_grid, out, xmf):
             )
         if flow:
             for f in FLOW_FIELDS:
-                want = (count, 3) if f == "longitudinal_flux" else (count,)
+                want = (n, 3) if f == "longitudinal_flux" else (n,)
                 if fields[f].shape != want:
                     raise InterfaceOutputError("%s: %s of shape %s, expected %s" % (ctx, f, fields[f].shape, want))
             if np.any(fields["aperture"] < 0):
@@ -274,9 +295,9 @@ def _read_collection(collection, output_dir, h5files, cells_grid, out, xmf):
     return np.array(times, dtype=float), fields_per_time, ref_mesh
 
 
-def read_interfaces(output_dir):
-    """Parses <output_dir>/interfaces.xmf, checks it against the HDF5 file, returns Interfaces."""
-    xmf = os.path.join(output_dir, "interfaces.xmf")
+def _collection(output_dir, name):
+    """The temporal collection of <output_dir>/<name>.xmf, its only Domain grid."""
+    xmf = os.path.join(output_dir, name + ".xmf")
     if not os.path.isfile(xmf):
         raise InterfaceOutputError("%s does not exist" % xmf)
     try:
@@ -286,19 +307,32 @@ def read_interfaces(output_dir):
     domain = _child(root, "Domain")
     if domain is None:
         raise InterfaceOutputError("%s: no Domain" % xmf)
-    collections = {}
-    for g in _children(domain, "Grid"):
-        if g.get("GridType") != "Collection" or g.get("CollectionType") != "Temporal":
-            raise InterfaceOutputError("%s: Domain grid %s is not a temporal collection" % (xmf, g.get("Name")))
-        collections[g.get("Name")] = g
-    if sorted(collections) != sorted(COLLECTIONS):
-        raise InterfaceOutputError("%s: collections %s, expected %s" % (xmf, sorted(collections), COLLECTIONS))
+    grids = _children(domain, "Grid")
+    if len(grids) != 1 or grids[0].get("Name") != name:
+        raise InterfaceOutputError("%s: Domain grids %s, expected one, %s" % (xmf, [g.get("Name") for g in grids], name))
+    g = grids[0]
+    if g.get("GridType") != "Collection" or g.get("CollectionType") != "Temporal":
+        raise InterfaceOutputError("%s: Domain grid %s is not a temporal collection" % (xmf, name))
+    return g, xmf
+
+
+def read_interfaces(output_dir):
+    """Parses <output_dir>/interface_cells.xmf and interface_points.xmf, checks them against the
+    HDF5 file, returns Interfaces."""
+    collections, files = {}, {}
+    for name in COLLECTIONS:
+        collections[name], files[name] = _collection(output_dir, name)
+    xmf = files["interface_cells"]
 
     out = Interfaces()
     h5files = {}
     try:
-        ctimes, cfields, cmesh = _read_collection(collections["interface_cells"], output_dir, h5files, True, out, xmf)
-        ptimes, pfields, pmesh = _read_collection(collections["interface_points"], output_dir, h5files, False, out, xmf)
+        ctimes, cfields, cmesh = _read_collection(
+            collections["interface_cells"], output_dir, h5files, True, out, files["interface_cells"]
+        )
+        ptimes, pfields, pmesh = _read_collection(
+            collections["interface_points"], output_dir, h5files, False, out, files["interface_points"]
+        )
     finally:
         for f in h5files.values():
             f.close()
@@ -345,7 +379,8 @@ def main(argv):
     except (InterfaceOutputError, OSError) as e:
         print("INVALID: %s" % e, file=sys.stderr)
         return 1
-    print("%s/interfaces: valid" % argv[1])
+    print("%s/interface_cells.xmf, interface_points.xmf: valid" % argv[1])
+    print("  interfaces: %s; parts: %s" % (", ".join(out.interface_names), ", ".join(out.part_names)))
     print(
         "  %dD, %d %s cells (%d nodes), %d integration points"
         % (

@@ -219,8 +219,52 @@ struct Output {
   std::vector<PetscInt> cells;
   PetscInt corners = 0;
   Dataset disp[2], pres[2], excess[2];
+  Dataset tensor[2];            // the cell field "tensor" (9 values per cell)
+  std::vector<PetscInt> region; // /cell_fields/region
   double time[2] = {0, 0};
 };
+
+// Cell field values written at step s, from the cell's centroid c: component k of "tensor" is
+// (s + 1) (k + 1) + 10 c_x + 100 c_y + 1000 c_z; the region is 1 right of x = 0.5, else 0.
+double cellValue(const double *c, int k, int step)
+{
+  return (step + 1.0) * (k + 1.0) + 10.0 * c[0] + 100.0 * c[1] + 1000.0 * c[2];
+}
+int cellRegion(const double *c)
+{
+  return c[0] > 0.5 ? 1 : 0;
+}
+
+// Centroid (vertex mean) of every local bulk cell, the cells in chart order.
+PetscErrorCode bulkCellCentroids(DM dm, std::vector<PetscInt> *cells, std::vector<double> *centroid)
+{
+  PetscInt cStart, cEnd, cdim;
+  Vec coords;
+  PetscSection csec;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDim(dm, &cdim));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(dm, c, &ct));
+    if (ct != DM_POLYTOPE_TRIANGLE && ct != DM_POLYTOPE_QUADRILATERAL &&
+        ct != DM_POLYTOPE_TETRAHEDRON && ct != DM_POLYTOPE_HEXAHEDRON)
+      continue;
+    PetscScalar *x = nullptr;
+    PetscInt n = 0;
+    PetscCall(DMPlexVecGetClosure(dm, csec, coords, c, &n, &x));
+    double m[3] = {0, 0, 0};
+    for (PetscInt i = 0; i < n; ++i)
+      m[i % cdim] += x[i] / (double)(n / cdim);
+    PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
+    cells->push_back(c);
+    centroid->insert(centroid->end(), m, m + 3);
+  }
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode readOutput(const std::string &file, Output *o)
 {
@@ -239,6 +283,23 @@ PetscErrorCode readOutput(const std::string &file, Output *o)
     PetscCall(readVec(viewer, "/fields/excess_pressure", step.c_str(), &o->excess[s]));
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, path.c_str(), "time", PETSC_REAL, nullptr, &t));
     o->time[s] = t;
+    PetscCall(readVec(viewer, "/cell_fields/tensor", step.c_str(), &o->tensor[s]));
+  }
+  {
+    IS is;
+    PetscInt n;
+    const PetscInt *idx;
+    PetscCall(ISCreate(PETSC_COMM_SELF, &is));
+    PetscCall(ISSetType(is, ISGENERAL));
+    PetscCall(PetscObjectSetName((PetscObject)is, "region"));
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "/cell_fields"));
+    PetscCall(ISLoad(is, viewer));
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &idx));
+    o->region.assign(idx, idx + n);
+    PetscCall(ISRestoreIndices(is, &idx));
+    PetscCall(ISDestroy(&is));
   }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
@@ -323,8 +384,27 @@ PetscErrorCode writeTwoSteps(DM dm, const std::string &dir)
   PetscCall(fillLocal(dm, 1, false, &sol1));
   PetscCall(fillLocal(dm, 0, true, &init));
   PetscCall(writer.open(dm, dir, "fields"));
-  PetscCall(writer.write(0.25, sol0, init));
-  PetscCall(writer.write(1.5, sol1, nullptr));
+  // Cell fields as Problem hands them: every local bulk cell (ghosts too), in chart order.
+  std::vector<PetscInt> cells;
+  std::vector<double> centroid;
+  PetscCall(bulkCellCentroids(dm, &cells, &centroid));
+  std::vector<int> region;
+  for (size_t i = 0; i < cells.size(); ++i)
+    region.push_back(cellRegion(&centroid[3 * i]));
+  PetscCall(writer.writeRegions(cells, region, {"left", "right"}));
+  poroseam::CellFields f[2];
+  for (int s = 0; s < 2; ++s) {
+    f[s].cells = cells;
+    f[s].fields.resize(1);
+    f[s].fields[0].name = "tensor";
+    f[s].fields[0].units = "Pa";
+    f[s].fields[0].components = 9;
+    for (size_t i = 0; i < cells.size(); ++i)
+      for (int k = 0; k < 9; ++k)
+        f[s].fields[0].values.push_back(cellValue(&centroid[3 * i], k, s));
+  }
+  PetscCall(writer.write(0.25, sol0, init, &f[0]));
+  PetscCall(writer.write(1.5, sol1, nullptr, &f[1]));
   PetscCall(writer.close());
   PetscCall(writer.close()); // idempotent
   PetscCall(VecDestroy(&sol0));
@@ -390,11 +470,16 @@ void checkMesh(DM dm, const std::string &tag, PetscInt expectVertices, PetscInt 
       const double *x = &o.xyz.values[i * cdim];
       const bool hasP = x[0] <= kPressureXMax;
       for (PetscInt d = 0; d < 3; ++d)
-        if (std::abs(o.disp[s].values[3 * i + d] - dispValue(x, cdim, d, s)) > 1e-12) ++bad;
-      const double p = hasP ? presValue(x, s) : 0.0;
-      const double ex = hasP ? (s == 0 ? p - kInitialPressure : p) : 0.0;
-      if (std::abs(o.pres[s].values[i] - p) > 1e-12) ++bad;
-      if (std::abs(o.excess[s].values[i] - ex) > 1e-12) ++bad;
+        if (!(std::abs(o.disp[s].values[3 * i + d] - dispValue(x, cdim, d, s)) <= 1e-12)) ++bad;
+      if (!hasP) {
+        // No pressure dof: a vertex of non-porous cells only, written as NaN.
+        if (!std::isnan(o.pres[s].values[i]) || !std::isnan(o.excess[s].values[i])) ++bad;
+        continue;
+      }
+      const double p = presValue(x, s);
+      const double ex = s == 0 ? p - kInitialPressure : p;
+      if (!(std::abs(o.pres[s].values[i] - p) <= 1e-12)) ++bad;
+      if (!(std::abs(o.excess[s].values[i] - ex) <= 1e-12)) ++bad;
     }
   }
   EXPECT_EQ(bad, 0) << "field values differ from the functions at the written coordinates";
@@ -417,6 +502,28 @@ void checkMesh(DM dm, const std::string &tag, PetscInt expectVertices, PetscInt 
   EXPECT_EQ(badCells, 0) << "cells with wrong orientation or measure (expected " << cellMeasure
                          << ")";
 
+  // Cell fields: each written cell's values are those of its own centroid (from the written
+  // connectivity and geometry), whichever rank owned it.
+  {
+    const size_t nc = o.cells.size() / o.corners;
+    ASSERT_EQ(o.region.size(), nc);
+    int badValues = 0;
+    for (size_t c = 0; c < nc; ++c) {
+      double m[3] = {0, 0, 0};
+      for (PetscInt k = 0; k < o.corners; ++k)
+        for (PetscInt d = 0; d < cdim; ++d)
+          m[d] += o.xyz.values[o.cells[c * o.corners + k] * cdim + d] / o.corners;
+      badValues += o.region[c] != cellRegion(m);
+      for (int s = 0; s < 2; ++s) {
+        ASSERT_EQ(o.tensor[s].cols, 9);
+        ASSERT_EQ((size_t)o.tensor[s].rows, nc);
+        for (int k = 0; k < 9; ++k)
+          badValues += !(std::abs(o.tensor[s].values[9 * c + k] - cellValue(m, k, s)) <= 1e-9);
+      }
+    }
+    EXPECT_EQ(badValues, 0) << "cell fields not at their cells";
+  }
+
   // XDMF: two times.
   {
     std::ifstream in(dir + "/fields.xmf");
@@ -427,6 +534,10 @@ void checkMesh(DM dm, const std::string &tag, PetscInt expectVertices, PetscInt 
     EXPECT_NE(xmf.find("<Time Value=\"0.25\""), std::string::npos);
     EXPECT_NE(xmf.find("<Time Value=\"1.5\""), std::string::npos);
     EXPECT_NE(xmf.find("excess_pressure"), std::string::npos);
+    EXPECT_NE(xmf.find("<Attribute Name=\"tensor\" AttributeType=\"Tensor\" Center=\"Cell\">"),
+              std::string::npos);
+    EXPECT_NE(xmf.find("<Attribute Name=\"region\" AttributeType=\"Scalar\" Center=\"Cell\">"),
+              std::string::npos);
   }
 
   MPI_Barrier(PETSC_COMM_WORLD);

@@ -475,6 +475,26 @@ void runCase(const std::string &tag, const std::string &mesh, int dim,
   checkFields(viewer, "cells", 1, 1.25, dim, nc, base, 2.0);
   checkFields(viewer, "points", 0, 0.5, dim, np, base, 1.0);
   checkFields(viewer, "points", 1, 1.25, dim, np, base, 2.0);
+  // Both faces' displacements: the base (side 1) stays, the block (side 2) moved by k * base,
+  // at every node of the cell grid and every integration point.
+  for (const char *grid : {"cells", "points"})
+    for (int step = 0; step < 2; ++step) {
+      const std::string g = std::string("/") + grid + "/fields/";
+      const PetscInt rows = std::string(grid) == "cells" ? xyz.rows : np;
+      Dataset minus, plus;
+      ASSERT_EQ(readReal(viewer, g + "displacement_minus", std::to_string(step), &minus), 0);
+      ASSERT_EQ(readReal(viewer, g + "displacement_plus", std::to_string(step), &plus), 0);
+      ASSERT_EQ(minus.rows, rows);
+      ASSERT_EQ(plus.rows, rows);
+      ASSERT_EQ(plus.cols, 3);
+      int wrong = 0;
+      for (PetscInt i = 0; i < rows; ++i)
+        for (int d = 0; d < 3; ++d) {
+          const double want = d < dim ? (step + 1.0) * base[d] : 0.0;
+          wrong += std::abs(minus(i, d)) > 1e-15 || std::abs(plus(i, d) - want) > 1e-15;
+        }
+      EXPECT_EQ(wrong, 0) << grid << " step " << step << ": displacement_minus / _plus";
+    }
   PetscViewerDestroy(&viewer);
   runReader(out, dir, false);
 }
@@ -666,7 +686,8 @@ TEST(InterfaceWriter, NoInterfacesWritesNothing)
   VecDestroy(&u);
   MPI_Barrier(PETSC_COMM_WORLD);
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/interfaces.h5"));
-  EXPECT_FALSE(std::filesystem::exists(dir + "/out/interfaces.xmf"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/interface_cells.xmf"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/interface_points.xmf"));
 }
 
 } // namespace
