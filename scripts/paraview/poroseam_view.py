@@ -24,7 +24,7 @@ from paraview.simple import (Calculator, ColorBy, CreateView, ExtractCellsByType
 STATE_NAMES = ("open", "stick", "slip")
 # Interface state colours, apart from the cool-to-warm pressure map (blue - grey - red).
 STATE_COLOURS = ((0.0, 0.0, 0.0), (0.0, 0.70, 0.0), (0.85, 0.0, 0.85))
-NAN_GREY = (0.62, 0.62, 0.62)
+NAN_GREY = (0.42, 0.43, 0.46)  # steel-like, darker than the map's light grey zero
 
 
 class ViewError(Exception):
@@ -190,6 +190,7 @@ class Pipeline:
                 shown = Calculator(registrationName="kPa", Input=warped)
                 shown.ResultArrayName = self.array
                 shown.Function = f"{field}/1000"
+                shown.ReplaceInvalidResults = 0  # NaN (no pressure: the steel) stays NaN
             else:
                 self.label = field
             v = values[field]
@@ -303,6 +304,7 @@ class Pipeline:
         except AttributeError:
             pass
         d = Show(self.bulk_out, view)
+        d.Ambient, d.Diffuse = 1.0, 0.0  # unshaded: the colours of the colour bar
         ColorBy(d, ("POINTS", self.array))
         lut = GetColorTransferFunction(self.array)
         lut.ApplyPreset("Cool to Warm" if self.diverging else "Viridis (matplotlib)", True)

@@ -11,9 +11,10 @@ With pvpython (Debian packages paraview and xvfb), otherwise the test ends as SK
   * scripts/plot_caisson writes fig9a_excess_pressure.png and its ParaView state;
   * the picture is not blank and shows what it should, away from its legends (the middle of
     the picture below the caption): the pressure colour map's blues (the suction in the plug:
-    the excess pore pressure there is negative, checked in fields.h5 first) and the colours of
-    the interface states the output holds at that time (state counts read from
-    interfaces.h5), and not the colour of a state the output does not hold;
+    the excess pore pressure there is negative, checked in fields.h5 first), the grey of the
+    steel when the output writes NaN pressure there, and the colours of the interface states
+    the output holds at that time (state counts read from the interface output), and not the
+    colour of a state the output does not hold;
   * the state file names the run's fields.xmf (paraview --state opens the same view);
   * render_fields on a directory without fields.xmf exits 2 naming the missing file.
 """
@@ -36,6 +37,7 @@ SCRIPTS = os.path.join(common.SOURCE, "scripts")
 # The colours of the interface states (scripts/paraview/poroseam_view.py STATE_COLOURS), 0-255.
 STATE_RGB = {0: (0, 0, 0), 1: (0, 178, 0), 2: (217, 0, 217)}
 STATE_NAMES = {0: "open", 1: "stick", 2: "slip"}
+NAN_RGB = (107, 110, 117)  # poroseam_view.NAN_GREY: regions without pressure (the steel)
 
 
 def run(cmd, env=None):
@@ -124,6 +126,11 @@ def main():
         blue = int(np.sum((b - r > 40) & (b - g > 20)))
         chk.check("suction drawn: blue pixels of the colour map in the picture's middle",
                   -blue, -2000)
+        steel = int(np.sum(np.isnan(excess)))
+        if steel:  # outputs that write NaN pressure outside porous regions
+            count = pixels_near(middle, NAN_RGB, tol=6)
+            chk.check(f"the steel ({steel} vertices without pressure) drawn grey: pixels of the NaN colour",
+                      -count, -500)
         for s, n in enumerate(states):
             count = pixels_near(middle, STATE_RGB[s])
             if n > 0:
