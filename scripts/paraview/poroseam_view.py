@@ -16,9 +16,9 @@ import math
 import os
 
 from paraview import servermanager
-from paraview.simple import (Calculator, ColorBy, CreateView, ExtractCellsByType, GetAnimationScene,
+from paraview.simple import (Calculator, ColorBy, CreateView, ExtractCellsByType, GetTimeKeeper,
                              GetColorTransferFunction, GetDisplayProperties, GetScalarBar,
-                             Reflect, Render, ResampleWithDataset, SetActiveView, Show, Slice, Text,
+                             PythonCalculator, Reflect, Render, ResampleWithDataset, SetActiveView, Show, Slice, Text,
                              Transform, WarpByVector, Xdmf3ReaderS)
 
 STATE_NAMES = ("open", "stick", "slip")
@@ -187,10 +187,11 @@ class Pipeline:
             if kpa:
                 self.label += " [kPa]"
                 self.array = field + "_kPa"
-                shown = Calculator(registrationName="kPa", Input=warped)
-                shown.ResultArrayName = self.array
-                shown.Function = f"{field}/1000"
-                shown.ReplaceInvalidResults = 0  # NaN (no pressure: the steel) stays NaN
+                # numpy keeps NaN (no pressure: the steel) quietly; the Calculator filter
+                # would replace it by 0, or report every NaN with ReplaceInvalidResults off
+                shown = PythonCalculator(registrationName="kPa", Input=warped)
+                shown.ArrayName = self.array
+                shown.Expression = f"{field} / 1000"
             else:
                 self.label = field
             v = values[field]
@@ -294,9 +295,9 @@ class Pipeline:
         SetActiveView(view)
         font = max(8, round(14 * view.ViewSize[0] / 1200.0))  # 14 pt at 1200 pixels across
         view.ViewTime = self.time
-        animation = GetAnimationScene()  # the time saved in a state file, shown in the GUI
-        animation.UpdateAnimationUsingDataTimeSteps()
-        animation.AnimationTime = self.time
+        # the time saved in a state file and shown in the GUI (the animation scene follows
+        # the time keeper; its UpdateAnimationUsingDataTimeSteps() blocks in the GUI)
+        GetTimeKeeper().Time = self.time
         view.OrientationAxesVisibility = 0
         view.Background = [1.0, 1.0, 1.0]
         try:  # ParaView >= 5.10 uses a palette unless told otherwise

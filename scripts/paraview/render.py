@@ -85,13 +85,18 @@ def main(argv):
     except ViewError as e:
         print(f"render.py: {e}", file=sys.stderr)
         return 2
-    from paraview.simple import Delete, Render, SaveScreenshot, SaveState
+    from paraview.simple import Delete, GetAnimationScene, Render, SaveScreenshot, SaveState
 
     view = new_view(width, height)
     pipeline.show(view)
     Render(view)
     SaveScreenshot(png, view, ImageResolution=[width, height], TransparentBackground=0)
     if state.lower() != "none":
+        # the state opens at the picture's time: the animation scene's time is what a state
+        # restores (done here, not in the GUI's view.py, where this call blocks)
+        animation = GetAnimationScene()
+        animation.UpdateAnimationUsingDataTimeSteps()
+        animation.AnimationTime = pipeline.time
         SaveState(state)
     print(f"{png}: {pipeline.caption().replace(chr(10), '; ')}"
           + ("" if state.lower() == "none" else f"; state {state}"))

@@ -15,10 +15,12 @@ With pvpython (Debian packages paraview and xvfb), otherwise the test ends as SK
     steel when the output writes NaN pressure there, and the colours of the interface states
     the output holds at that time (state counts read from the interface output), and not the
     colour of a state the output does not hold;
-  * the state file names the run's fields.xmf (paraview --state opens the same view);
+  * the state file names the run's fields.xmf and the picture's time (paraview --state opens
+    the same view);
   * render_fields on a directory without fields.xmf exits 2 naming the missing file.
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -140,8 +142,13 @@ def main():
                 chk.check(f"interface state '{STATE_NAMES[s]}' (no cell) not drawn: pixels of its colour",
                           count, 10)
     state = os.path.splitext(png)[0] + ".pvsm"
-    names_fields = os.path.isfile(state) and os.path.join(out, "fields.xmf") in open(state).read()
-    chk.check("the ParaView state file exists and names the run's fields.xmf", 0, 0, ok=names_fields)
+    text = open(state).read() if os.path.isfile(state) else ""
+    chk.check("the ParaView state file exists and names the run's fields.xmf", 0, 0,
+              ok=os.path.join(out, "fields.xmf") in text)
+    m = re.search(r'name="AnimationTime"[^>]*>\s*<Element index="0" value="([^"]+)"', text)
+    at = float(m.group(1)) if m else float("nan")
+    chk.check(f"the state opens at the picture's time (AnimationTime {at:g} s, last output "
+              f"{fields.times[-1]:g} s)", abs(at - fields.times[-1]), 1e-9 * max(1.0, fields.times[-1]))
 
     # ---- bad input
     empty = tempfile.mkdtemp(prefix="nofields")
