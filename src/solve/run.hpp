@@ -116,6 +116,12 @@ PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx);
 /// (kinkLineSearch; -snes_kink_linesearch 0 keeps PETSc's -snes_linesearch_type).
 PetscErrorCode configureLineSearch(Run &run, SNES snes);
 
+// solution_view.cpp: PETSc's own viewers of the solution show the prescribed values too.
+
+/// Gives X (and the vectors TS and SNES duplicate from it) a view operation for VTK, HDF5,
+/// draw and GLVis viewers that inserts the prescribed values at run.stage_time first.
+PetscErrorCode attachSolutionView(const Run &run, Vec X);
+
 // run_ending.cpp: how the run ended.
 
 /// After TSSolve: the error message of a run that did not reach its final time (empty when it

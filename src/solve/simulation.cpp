@@ -346,6 +346,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   Vec X;
   PetscCall(DMCreateGlobalVector(run.dm, &X));
   PetscCall(PetscObjectSetName((PetscObject)X, "solution"));
+  PetscCall(attachSolutionView(run, X));
   PetscCall(DMLocalToGlobal(run.dm, run.initial, INSERT_VALUES, X));
   PetscCall(VecDuplicate(X, &run.last_increment));
   PetscCall(VecSet(run.last_increment, 0.0));
@@ -479,6 +480,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   run.step_start = MPI_Wtime();
   run.loop_start_wall = run.step_start;
   PetscCall(TSGetTime(run.ts, &run.loop_start_time));
+  run.stage_time = run.loop_start_time; // the state PETSc's monitors view at step 0
   PetscCall(TSGetMaxTime(run.ts, &run.t_end));
   const int first_step = run.step;
   PetscCall(TSSetErrorIfStepFails(run.ts, PETSC_FALSE));
