@@ -2,9 +2,9 @@
 (pvpython, PNG + state file) and view.py (the ParaView GUI, `paraview --script`).
 
     bulk:      fields.xmf -> [3D: Slice] -> Warp By Vector (displacement x scale)
-               -> [reflect: Reflect about the picture's
-               horizontal coordinate = 0, x = r = 0 in 2D] -> coloured by the excess pore pressure [kPa]
-               (or the pressure, or |u| in a drained scene); NaN (non-porous regions) grey
+               -> excess pore pressure in kPa (or the pressure, or |u| of a drained scene)
+               -> [Reflect about the picture's horizontal coordinate = 0: r = 0 in 2D];
+               NaN (regions without pressure: the steel) dark grey
     interface: interface_cells.xmf, or the cell grid of interfaces.xmf -> [3D: Slice]
                -> warped with its own displacement_minus (side 1) when the output has it,
                else with the bulk displacement resampled at its nodes -> [Reflect]
@@ -16,10 +16,10 @@ import math
 import os
 
 from paraview import servermanager
-from paraview.simple import (Calculator, ColorBy, CreateView, ExtractCellsByType, GetTimeKeeper,
-                             GetColorTransferFunction, GetDisplayProperties, GetScalarBar,
-                             PythonCalculator, Reflect, Render, ResampleWithDataset, SetActiveView, Show, Slice, Text,
-                             Transform, WarpByVector, Xdmf3ReaderS)
+from paraview.simple import (Calculator, ColorBy, CreateView, ExtractCellsByType,
+                             GetColorTransferFunction, GetScalarBar, GetTimeKeeper,
+                             PythonCalculator, Reflect, Render, ResampleWithDataset, SetActiveView,
+                             Show, Slice, Text, Transform, WarpByVector, Xdmf3ReaderS)
 
 STATE_NAMES = ("open", "stick", "slip")
 # Interface state colours, apart from the cool-to-warm pressure map (blue - grey - red).
@@ -163,6 +163,10 @@ class Pipeline:
         values = fetch_arrays(section, ["displacement"] + ([field] if field else []), self.time)
         import numpy as np
 
+        if field is not None and values[field] is not None and np.ndim(values[field]) != 1:
+            raise ViewError(f"--field {field}: a vector or tensor; expected a scalar point array "
+                            "(pressure, excess_pressure)")
+
         u = values["displacement"]
         umax = float(np.nanmax(np.linalg.norm(u, axis=1))) if u is not None and len(u) else 0.0
         sb = bounds(section, self.time)
@@ -216,55 +220,54 @@ class Pipeline:
             shown.FlipAllInputArrays = 1
         self.bulk_out = shown
 
-        # ---- the interfaces
-        self.interface_out = None
-        path, combined = interface_file(self.out_dir)
-        if path is not None:  # else a scene without interfaces
-            ifc = Xdmf3ReaderS(registrationName=os.path.basename(path), FileName=[path])
-            ifc.UpdatePipelineInformation()
-            cells = ifc
-            if combined:  # keep the cell grid, drop the integration points (Polyvertex)
-                cells = ExtractCellsByType(registrationName="interface cells", Input=ifc)
-                cells.CellTypes = ["Line", "Polyline", "Triangle", "Quadrilateral", "Polygon"]
-            ib = bounds(cells, self.time)
-            if ib[0] > ib[1]:  # empty: no interface in this scene
-                self.notes.append("no interface cells")
-            else:
-                isec = cells
-                if self.slice is not None:
-                    isec = Slice(registrationName="interface section", Input=cells)
-                    isec.SliceType = "Plane"
-                    isec.SliceType.Origin = self.slice[1]
-                    isec.SliceType.Normal = self.slice[0]
-                own = "displacement_minus" in ifc.PointData.keys()
-                if own:
-                    moved = isec
-                    vectors = "displacement_minus"
-                else:
-                    # Older outputs have no displacement on the interface: take the bulk's at
-                    # its nodes (either side of the interface: a picture, not a measurement).
-                    moved = ResampleWithDataset(registrationName="bulk displacement",
-                                                SourceDataArrays=section, DestinationMesh=isec)
-                    moved.PassCellArrays = 1
-                    vectors = "displacement"
-                    self.notes.append("interfaces warped with the bulk displacement")
-                iw = WarpByVector(registrationName="interface deformed", Input=moved)
-                iw.Vectors = ["POINTS", vectors]
-                iw.ScaleFactor = scale
-                # in front of the bulk faces they lie on, towards the camera
-                lift = Transform(registrationName="interface in front", Input=iw)
-                lift.Transform = "Transform"
-                toward = self.camera_direction()
-                lift.Transform.Translate = [-1e-3 * size * c for c in toward]
-                iout = lift
-                if self.reflect:
-                    iout = Reflect(registrationName="interface reflected", Input=lift)
-                    iout.Plane = "XYZ"[self.plane_axes()[0]]
-                    iout.Center = 0.0
-                    iout.CopyInput = 1
-                self.interface_out = iout
+        self.interface_out = self.interfaces(section, scale, size)
         self.line_width = line_width
         self.title = title
+
+    def interfaces(self, section, scale, size):
+        """The interface pipeline (None for a scene without interfaces): the cell grid,
+        [sectioned], warped with its side-1 face, moved towards the camera, [reflected]."""
+        path, combined = interface_file(self.out_dir)
+        if path is None:
+            return None
+        ifc = Xdmf3ReaderS(registrationName=os.path.basename(path), FileName=[path])
+        ifc.UpdatePipelineInformation()
+        cells = ifc
+        if combined:  # keep the cell grid, drop the integration points (Polyvertex)
+            cells = ExtractCellsByType(registrationName="interface cells", Input=ifc)
+            cells.CellTypes = ["Line", "Polyline", "Triangle", "Quadrilateral", "Polygon"]
+        ib = bounds(cells, self.time)
+        if ib[0] > ib[1]:  # an empty grid
+            return None
+        if self.slice is not None:
+            cells = Slice(registrationName="interface section", Input=cells)
+            cells.SliceType = "Plane"
+            cells.SliceType.Origin = self.slice[1]
+            cells.SliceType.Normal = self.slice[0]
+        if "displacement_minus" in ifc.PointData.keys():
+            moved, vectors = cells, "displacement_minus"
+        else:
+            # Older outputs have no displacement on the interface: take the bulk's at its
+            # nodes (from either side of the interface: a picture, not a measurement).
+            moved = ResampleWithDataset(registrationName="bulk displacement",
+                                        SourceDataArrays=section, DestinationMesh=cells)
+            moved.PassCellArrays = 1
+            vectors = "displacement"
+            self.notes.append("interfaces warped with the bulk displacement")
+        warped = WarpByVector(registrationName="interface deformed", Input=moved)
+        warped.Vectors = ["POINTS", vectors]
+        warped.ScaleFactor = scale
+        # in front of the bulk faces they lie on: 1e-3 of the picture towards the camera
+        lifted = Transform(registrationName="interface in front", Input=warped)
+        lifted.Transform = "Transform"
+        lifted.Transform.Translate = [-1e-3 * size * c for c in self.camera_direction()]
+        if not self.reflect:
+            return lifted
+        reflected = Reflect(registrationName="interface reflected", Input=lifted)
+        reflected.Plane = "XYZ"[self.plane_axes()[0]]
+        reflected.Center = 0.0
+        reflected.CopyInput = 1
+        return reflected
 
     def camera_direction(self):
         """The direction the camera looks in: 2D -z; a 3D section face on, oriented so that
