@@ -5,7 +5,7 @@ runs are reflected about the axis (the full section through it). Also saves the 
 ParaView state file to open interactively: paraview --state=<state>.
 
     pvpython scripts/paraview/render.py OUTPUT_DIR [options]     (needs an X display:
-    scripts/render_fields runs it under xvfb-run when there is none)
+    scripts/render_fields starts a virtual one, Xvfb, when there is none)
 
 Options: --output PNG (default OUTPUT_DIR/fields.png), --state PVSM (default: the PNG's name
 with .pvsm; 'none' for no state file), --time T (the output time nearest to T; default the
