@@ -191,7 +191,8 @@ def plot(chk, run, figures):
         if os.path.exists(p):
             os.remove(p)
     t0 = time.time()
-    r = subprocess.run([sys.executable, exe, run.out], capture_output=True, text=True)
+    # fig 9a (ParaView) has its own test, label pictures: not drawn again here
+    r = subprocess.run([sys.executable, exe, run.out, "--no-paraview"], capture_output=True, text=True)
     print("  plot_caisson (%.1f s):" % (time.time() - t0))
     for line in (r.stdout + r.stderr).strip().splitlines():
         print("    " + line)

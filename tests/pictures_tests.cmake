@@ -1,0 +1,8 @@
+# Pictures drawn with ParaView (docs/viewing.md): scripts/render_fields and figure 9a of
+# scripts/plot_caisson on a small axisymmetric caisson run; without ParaView, the one-line
+# messages of both scripts. Driver tests/pictures/pictures.py (its docstring lists the checks).
+# SKIPPED (exit 77) after the checks without ParaView when pvpython is not installed: ParaView
+# is not a dependency of poroseam. About 10 s on a quiet machine (pvpython starts twice).
+# Included by tests/CMakeLists.txt.
+poroseam_scene_test(pictures.caisson_fig9a "pictures" pictures/pictures.py)
+set_tests_properties(pictures.caisson_fig9a PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
