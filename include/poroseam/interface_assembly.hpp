@@ -36,7 +36,7 @@ struct InterfacePointState {
   // Hydraulics (interfaces with flow only; zero otherwise).
   bool flow = false;
   double interface_pressure = 0.0;         ///< p3 [Pa]
-  double aperture = 0.0;                   ///< h = D0 + o [m]
+  double aperture = 0.0;                   ///< h = D0 + d + o [m] (d: shear dilation)
   double aperture_rate = 0.0;              ///< dh/dt [m/s]
   double longitudinal_flux[3] = {0, 0, 0}; ///< q_l, global [m2/s]
   double transversal_flux1 = 0.0;          ///< f_1 = T_1 (p1 - p3), side 1 -> inner [m/s]
@@ -76,7 +76,7 @@ public:
   PetscErrorCode commit(Vec local);
   /// The committed history of this rank's integration points as plain numbers (for
   /// checkpoints: kHistoryValues per point, in this rank's cell order), and back.
-  static constexpr int kHistoryValues = 4;
+  static constexpr int kHistoryValues = 5;
   std::vector<double> committedHistory() const;
   size_t historyValues() const { return committed_.size() * kHistoryValues; }
   PetscErrorCode restoreHistory(const std::vector<double> &values);

@@ -5,6 +5,7 @@
 
 #include "poroseam/time_function.hpp"
 #include <array>
+#include <limits>
 #include <optional>
 #include <petscsys.h>
 #include <string>
@@ -81,6 +82,9 @@ struct Interface {
   double normal_stiffness = 0.0;     ///< K_N [Pa/m]
   double tangential_stiffness = 0.0; ///< K_T [Pa/m]
   double friction = 0.0;             ///< mu [-]
+  double dilation = 0.0;             ///< tan(psi), psi the dilation angle (0: none)
+  double dilation_slip_limit =       ///< plastic slip after which dilation stops [m]
+      std::numeric_limits<double>::infinity();
   bool nodal_integration = false;    ///< Newton-Cotes/Lobatto points at the vertices
   // Hydraulics (three-node scheme, docs/physics.md section 5): present only when flow is enabled.
   bool flow = false;            ///< interface pressure p3 and its flows exist

@@ -37,6 +37,14 @@ void globalTraction(const physics::ContactResponse &r, const double e[3][3], int
     }
 }
 
+physics::ContactParameters contactParameters(const Interface &in)
+{
+  physics::ContactParameters p{in.normal_stiffness, in.tangential_stiffness, in.friction};
+  p.dilation = in.dilation;
+  p.dilation_slip_limit = in.dilation_slip_limit;
+  return p;
+}
+
 } // namespace
 
 /// Per-point quantities the flow Jacobian needs besides the reported state.
@@ -48,6 +56,9 @@ struct FlowPoint {
   bool opening_active = false; ///< d o / d g_N = 1
   /// The same at the back-dated gap g_N - dt dg_N/dt of the storage rate (see loop()).
   bool back_opening_active = false;
+  /// d h / d(g_N, g_T1, g_T2) through the dilation (local frame): non-zero only at a point in
+  /// contact that slides with dilation.
+  double d_aperture_dilation[3] = {0, 0, 0};
 };
 
 namespace {
@@ -105,8 +116,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
   for (size_t i = 0; i < cells_.size(); ++i) {
     const Cell &cell = cells_[i];
     const Interface &in = scene_->interfaces[cell.iface];
-    const physics::ContactParameters params{in.normal_stiffness, in.tangential_stiffness,
-                                            in.friction};
+    const physics::ContactParameters params = contactParameters(in);
     const ReferenceElement &e = elements_[cell.element];
     const bool flow = cell.flow && rates.rate;
     const int n = closures_.closureSize(i);
@@ -184,7 +194,8 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
       const size_t h = cell.history + q;
       st.response = physics::contactResponse(params, initial_[h], committed_[h], dim_ - 1,
                                              st.gap_normal, st.gap_tangential);
-      st.opening = physics::mechanicalOpening(params, initial_[h], st.gap_normal);
+      st.opening =
+          physics::mechanicalOpening(params, initial_[h], st.gap_normal, st.response.dilation);
       double T[3][3];
       globalTraction(st.response, cell.frame, dim_, st.traction, T);
       if (cell.gap_water) {
@@ -224,15 +235,27 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         // opening has a kink in time and no method keeps its order. The BDF formula on h itself
         // would need the openings of the last two states at every point, and the chain rule
         // do/dg dg/dt would store water (g_N - g_prev instead of o) in the step that opens.
+        // With shear dilation d the aperture is h = D0 + d + o (o measured from the dilated
+        // contact position), and the back-dated state has the dilation of the last accepted
+        // state d_n: dh/dt = ((d - d_n) + (o - o_b)) / dt. The dilation's part is a backward
+        // difference under any integrator (d is history, not an unknown with a rate); it
+        // telescopes over the steps like the opening's under backward Euler.
         double gn_rate = 0.0;
         for (int d = 0; d < dim_; ++d)
           gn_rate += cell.frame[0][d] * gap_rate[d];
-        const double back_opening =
-            physics::mechanicalOpening(params, initial_[h], st.gap_normal - rates.dt * gn_rate);
+        const double dilation_n = physics::dilation(params, committed_[h].slip_plastic);
+        const double back_opening = physics::mechanicalOpening(
+            params, initial_[h], st.gap_normal - rates.dt * gn_rate, dilation_n);
         fp.opening_active = st.opening > 0.0;
         fp.back_opening_active = back_opening > 0.0;
-        st.aperture = in.aperture0 + st.opening;
-        st.aperture_rate = rates.dt > 0.0 ? (st.opening - back_opening) / rates.dt : 0.0;
+        if (!fp.opening_active)
+          for (int k = 0; k < 3; ++k)
+            fp.d_aperture_dilation[k] = st.response.d_dilation[k];
+        st.aperture = in.aperture0 + st.response.dilation + st.opening;
+        st.aperture_rate =
+            rates.dt > 0.0
+                ? ((st.response.dilation - dilation_n) + (st.opening - back_opening)) / rates.dt
+                : 0.0;
         const auto c = physics::cubicLawConductivity(st.aperture, scene_->fluid_viscosity);
         fp.conductivity = c.value;
         fp.d_conductivity = c.d_aperture;
@@ -374,6 +397,16 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                    const double back = fp.back_opening_active ? 1.0 : 0.0;
                    const double d_storage =
                        rates.dt > 0.0 ? (active - back) / rates.dt + shift * back : 0.0;
+                   // Through the dilation of a sliding point in contact (h moves with d, which
+                   // follows every gap component): its global gradient.
+                   double dh_dilation[3] = {0, 0, 0};
+                   bool dilating = false;
+                   for (int k = 0; k < dim_; ++k)
+                     for (int j = 0; j < dim_; ++j) {
+                       dh_dilation[j] += fp.d_aperture_dilation[k] * cell.frame[k][j];
+                       dilating = dilating || fp.d_aperture_dilation[k] != 0.0;
+                     }
+                   const double inv_dt = rates.dt > 0.0 ? 1.0 / rates.dt : 0.0;
                    for (int a = 0; a < nf; ++a)
                      for (int b = 0; b < nf; ++b) {
                        const double pp = phi[a] * phi[b];
@@ -409,6 +442,12 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                          add(cell.p3[a], cell.u2[b] + j, du * e1[j]);
                          add(cell.p3[a], cell.u1[b] + j, -du * e1[j]);
                        }
+                       if (!dilating) continue;
+                       const double dd = ws * (inv_dt * pp - gq * phi[b]);
+                       for (int j = 0; j < dim_; ++j) {
+                         add(cell.p3[a], cell.u2[b] + j, dd * dh_dilation[j]);
+                         add(cell.p3[a], cell.u1[b] + j, -dd * dh_dilation[j]);
+                       }
                      }
                    PetscFunctionReturn(0);
                  }));
@@ -437,8 +476,8 @@ std::vector<double> InterfaceAssembly::committedHistory() const
   std::vector<double> values;
   values.reserve(committed_.size() * kHistoryValues);
   for (const auto &h : committed_)
-    values.insert(values.end(),
-                  {h.gap_tangential[0], h.gap_tangential[1], h.shear[0], h.shear[1]});
+    values.insert(values.end(), {h.gap_tangential[0], h.gap_tangential[1], h.shear[0], h.shear[1],
+                                 h.slip_plastic});
   return values;
 }
 
@@ -452,6 +491,7 @@ PetscErrorCode InterfaceAssembly::restoreHistory(const std::vector<double> &valu
     const double *v = &values[i * kHistoryValues];
     committed_[i].gap_tangential[0] = v[0], committed_[i].gap_tangential[1] = v[1];
     committed_[i].shear[0] = v[2], committed_[i].shear[1] = v[3];
+    committed_[i].slip_plastic = v[4];
   }
   PetscFunctionReturn(0);
 }
@@ -475,9 +515,8 @@ PetscErrorCode InterfaceAssembly::stateChanges(Vec local, Vec local_end,
                    const double *g = &gaps[3 * h];
                    const double d[3] = {st.gap_normal - g[0], st.gap_tangential[0] - g[1],
                                         st.gap_tangential[1] - g[2]};
-                   const Interface &in = scene_->interfaces[cell.iface];
-                   const physics::ContactParameters params{in.normal_stiffness,
-                                                           in.tangential_stiffness, in.friction};
+                   const physics::ContactParameters params =
+                       contactParameters(scene_->interfaces[cell.iface]);
                    physics::contactStateChanges(params, initial_[h], committed_[h], dim_ - 1, g[0],
                                                 g + 1, d[0], d + 1, out);
                    return 0;

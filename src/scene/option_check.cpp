@@ -61,8 +61,9 @@ const char *const kRegionKeys[] = {"material",
                                    "dilation_angle",
                                    "tension_cutoff"};
 const char *const kBoundaryQuantities[] = {"ux", "uy", "uz", "p", "p3", "traction", "flux"};
-const char *const kInterfaceKeys[] = {"surfaces",    "side1", "KN", "KT", "friction",
-                                      "integration", "flow",  "D0", "T1", "T2"};
+const char *const kInterfaceKeys[] = {
+    "surfaces",       "side1",       "KN",   "KT", "friction", "dilation_angle",
+    "dilation_limit", "integration", "flow", "D0", "T1",       "T2"};
 
 /// The splits poroseam names (src/solve/nullspace.cpp), and the splits inside each.
 struct Split {

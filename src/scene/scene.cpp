@@ -424,6 +424,21 @@ PetscErrorCode readInterface(MPI_Comm comm, const std::vector<PhysicalName> &nam
                             &i.friction));
   PetscCheck(i.friction >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sfriction = %g: must be >= 0",
              p.c_str(), i.friction);
+  // Shear dilation (docs/physics.md section 4): angle psi in degrees, optional slip limit.
+  double psi = 0.0, slip_limit = 0.0;
+  PetscCall(getReal(p + "dilation_angle", &psi, nullptr));
+  PetscCheck(psi >= 0.0 && psi < 90.0, comm, PETSC_ERR_USER_INPUT,
+             "%sdilation_angle = %g: expected a dilation angle in degrees, 0 <= psi < 90",
+             p.c_str(), psi);
+  i.dilation = std::tan(psi * M_PI / 180.0);
+  PetscCall(getReal(p + "dilation_limit", &slip_limit, &set));
+  if (set) {
+    PetscCheck(slip_limit >= 0.0, comm, PETSC_ERR_USER_INPUT,
+               "%sdilation_limit = %g: expected the plastic slip [m] after which the joint stops "
+               "dilating, >= 0",
+               p.c_str(), slip_limit);
+    i.dilation_slip_limit = slip_limit;
+  }
   std::string rule = "gauss";
   PetscCall(getString(p + "integration", rule, nullptr));
   PetscCheck(rule == "gauss" || rule == "nodal", comm, PETSC_ERR_USER_INPUT,

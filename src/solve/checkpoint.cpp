@@ -11,7 +11,8 @@ namespace simulation_detail {
 namespace {
 
 /// Format of the file; a checkpoint of another version is refused, not misread.
-constexpr PetscInt kVersion = 1;
+/// 2: the interface history holds the accumulated plastic slip (5 values per point).
+constexpr PetscInt kVersion = 2;
 
 std::string checkpointDir(const std::string &output_dir)
 {

@@ -6,7 +6,8 @@
 // history combination is x_prev), so the storage term dh/dt is live. The gap is open
 // (aperture and storage follow the opening) or closed (h = D0), away from the kinks; with
 // a = 1.5 the back-dated gap g - dt dg/dt of the storage secant is open or, in the "opens"
-// cases, closed while the gap is open.
+// cases, closed while the gap is open. Closed and sliding with shear dilation, h = D0 + d with
+// the dilation d following every gap component.
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/mesh.hpp"
@@ -33,6 +34,8 @@ struct FlowCase {
   double t2;                      ///< transmissivity to side 2 (0: impervious)
   double rate_factor = 1.0;       ///< a: dx/dt = a (x - x_prev) / dt, shift a / dt
   double previous_fraction = 0.5; ///< gap of x_prev as a fraction of gap_normal
+  double gap_tangential = 0.0;    ///< block displacement along the first axis (slip)
+  const char *dilation_angle = "0"; ///< psi [deg]
 };
 
 PetscErrorCode setOption(const char *name, const std::string &value)
@@ -45,6 +48,7 @@ struct Result {
   double max_entry[3][3] = {{0}};
   int open = 0, closed = 0;
   int back_closed = 0; ///< open points whose back-dated gap g - dt dg/dt is closed
+  int dilating = 0;    ///< closed points sliding with dilation (h = D0 + d, d > 0)
 };
 
 PetscErrorCode compare(const FlowCase &c, Result *res)
@@ -73,6 +77,7 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
   PetscCall(setOption("-interface_contact_KN", "1e10"));
   PetscCall(setOption("-interface_contact_KT", "5e9"));
   PetscCall(setOption("-interface_contact_friction", "0.5"));
+  PetscCall(setOption("-interface_contact_dilation_angle", c.dilation_angle));
   PetscCall(setOption("-interface_contact_flow", "true"));
   PetscCall(setOption("-interface_contact_D0", "1e-5"));
   PetscCall(setOption("-interface_contact_T1", "1e-8"));
@@ -142,11 +147,10 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
           fieldOfLocal[off + k] = f;
           if (f == 0) {
             const bool last = k == dim - 1;
-            const double gap = inBlock[pt - pStart] && last ? c.gap_normal : 0.0;
+            const double target = last ? c.gap_normal : k == 0 ? c.gap_tangential : 0.0;
+            const double gap = inBlock[pt - pStart] ? target : 0.0;
             u[off + k] = gap + 1e-9 * noise(rng);
-            up[off + k] =
-                (last && inBlock[pt - pStart] ? c.previous_fraction * c.gap_normal : 0.0) +
-                1e-9 * noise(rng);
+            up[off + k] = c.previous_fraction * gap + 1e-9 * noise(rng);
           } else {
             u[off + k] += 1e4 * noise(rng); // hydrostatic plus a random excess
             up[off + k] = u[off + k] - 1e3 * noise(rng);
@@ -162,6 +166,9 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
   PetscCall(problem.interfaces().visit(
       local, InterfaceRates{rate, dt}, [&](int, int, PetscInt, const InterfacePointState &st) {
         (st.opening > 0.0 ? res->open : res->closed)++;
+        if (st.opening == 0.0 && st.response.dilation > 0.0 &&
+            std::fabs(st.aperture - 1e-5 - st.response.dilation) < 1e-12 * st.aperture)
+          res->dilating++;
         // The back-dated gap is closed when the whole opening is stored in this step.
         if (st.opening > 0.0 && std::fabs(st.aperture_rate * dt - st.opening) < 1e-3 * st.opening)
           res->back_closed++;
@@ -239,8 +246,10 @@ TEST_P(InterfaceFlowJacobian, EveryBlockMatchesFiniteDifferences)
   const FlowCase c = GetParam();
   Result r;
   ASSERT_EQ(compare(c, &r), 0);
-  std::printf("%s: %d open and %d closed points, %d open with the back-dated gap closed\n", c.name,
-              r.open, r.closed, r.back_closed);
+  std::printf("%s: %d open and %d closed points (%d of them sliding with dilation), %d open with "
+              "the back-dated gap closed\n",
+              c.name, r.open, r.closed, r.dilating, r.back_closed);
+  EXPECT_EQ(r.dilating, c.gap_tangential != 0.0 ? r.closed : 0);
   if (c.previous_fraction < 0.0 && c.gap_normal > 0.0)
     EXPECT_EQ(r.back_closed, r.open) << "every point opens in this step";
   else
@@ -261,8 +270,8 @@ TEST_P(InterfaceFlowJacobian, EveryBlockMatchesFiniteDifferences)
   EXPECT_GT(r.max_entry[2][2], 0.0);
   EXPECT_GT(r.max_entry[0][2], 0.0);
   EXPECT_GT(r.max_entry[2][1], 0.0);
-  if (c.gap_normal > 0)
-    EXPECT_GT(r.max_entry[2][0], 0.0) << "storage and conductivity follow the opening";
+  if (c.gap_normal > 0 || c.gap_tangential != 0.0)
+    EXPECT_GT(r.max_entry[2][0], 0.0) << "storage and conductivity follow the opening/dilation";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -277,5 +286,13 @@ INSTANTIATE_TEST_SUITE_P(
                       // ... and closed while the gap is open (the step in which it opens).
                       FlowCase{"opens2d_bdf2", "block_on_base_2d.geo", 2.0, 2e-6, 5e-9, 1.5, -0.5},
                       FlowCase{"opens3d_bdf2", "block_on_base_3d.geo", 12.0, 2e-6, 5e-9, 1.5, -0.5},
-                      FlowCase{"opens2d_be", "block_on_base_2d.geo", 2.0, 2e-6, 5e-9, 1.0, -0.5}),
+                      FlowCase{"opens2d_be", "block_on_base_2d.geo", 2.0, 2e-6, 5e-9, 1.0, -0.5},
+                      // Closed and sliding with shear dilation (psi = 10 deg): h = D0 + d, with d
+                      // following the normal and tangential gaps; backward Euler and BDF2 rates.
+                      FlowCase{"sliding2d_dilatant", "block_on_base_2d.geo", 2.0, -2e-6, 5e-9, 1.0,
+                               0.5, 1e-5, "10"},
+                      FlowCase{"sliding2d_dilatant_bdf2", "block_on_base_2d.geo", 2.0, -2e-6, 5e-9,
+                               1.5, 0.5, -1e-5, "10"},
+                      FlowCase{"sliding3d_dilatant", "block_on_base_3d.geo", 12.0, -2e-6, 5e-9, 1.0,
+                               0.5, 1e-5, "10"}),
     [](const auto &info) { return std::string(info.param.name); });

@@ -1,5 +1,6 @@
 // The assembled Jacobian of a mesh with a zero-thickness interface against central finite
-// differences of the assembled residual, with the interface in stick, slip and open states.
+// differences of the assembled residual, with the interface in stick, slip and open states,
+// and sliding with shear dilation (below and reaching the dilation limit).
 // The mesh (a block on a base) is split into cohesive cells exactly as a run does it; the
 // block is displaced relative to the base by a gap well inside each regime, plus a small
 // random perturbation so that no state is special.
@@ -11,6 +12,7 @@
 
 #include "central_differences.hpp"
 #include <cmath>
+#include <cstdlib>
 
 #include <gtest/gtest.h>
 #include <random>
@@ -28,6 +30,8 @@ struct Case {
   double gap[3]; // block displacement relative to the base (x, y[, z]); normal is the last axis
   physics::ContactState expected;
   double size_factor = 1.0; // gmsh -clscale: coarse in 3D, where the dense check costs n^2
+  const char *dilation_angle = "0"; // psi [deg]
+  const char *dilation_limit = "";  // plastic slip [m] after which dilation stops ("": none)
 };
 
 PetscErrorCode setOption(const char *name, const std::string &value)
@@ -35,7 +39,8 @@ PetscErrorCode setOption(const char *name, const std::string &value)
   return PetscOptionsSetValue(nullptr, name, value.c_str());
 }
 
-PetscErrorCode compare(const Case &c, double *relative_error, int *states)
+PetscErrorCode compare(const Case &c, double *relative_error, int *states, int *dilated,
+                       int *past_limit)
 {
   DM dm;
   Scene scene;
@@ -58,6 +63,9 @@ PetscErrorCode compare(const Case &c, double *relative_error, int *states)
   PetscCall(setOption("-interface_contact_KT", "5e9"));
   PetscCall(setOption("-interface_contact_friction", "0.5"));
   PetscCall(setOption("-interface_contact_integration", c.integration));
+  PetscCall(setOption("-interface_contact_dilation_angle", c.dilation_angle));
+  if (*c.dilation_limit)
+    PetscCall(setOption("-interface_contact_dilation_limit", c.dilation_limit));
   PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
   PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
                          testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
@@ -117,9 +125,13 @@ PetscErrorCode compare(const Case &c, double *relative_error, int *states)
   }
   // Every integration point must be in the intended state.
   states[0] = states[1] = states[2] = 0;
+  *dilated = *past_limit = 0;
+  const double limit = *c.dilation_limit ? std::atof(c.dilation_limit) : HUGE_VAL;
   PetscCall(problem.interfaces().visit(local, InterfaceRates{},
                                        [&](int, int, PetscInt, const InterfacePointState &st) {
                                          ++states[(int)st.response.state];
+                                         *dilated += st.response.dilation > 0.0;
+                                         *past_limit += st.response.updated.slip_plastic > limit;
                                        }));
 
   auto residual = [&](Vec Xg, Vec Fg) -> PetscErrorCode {
@@ -166,13 +178,16 @@ TEST_P(InterfaceJacobian, MatchesFiniteDifferences)
 {
   const Case c = GetParam();
   double rel = 1.0;
-  int states[3];
-  ASSERT_EQ(compare(c, &rel, states), 0);
+  int states[3], dilated, past_limit;
+  ASSERT_EQ(compare(c, &rel, states, &dilated, &past_limit), 0);
   std::printf("%s: open %d, stick %d, slip %d points; max |J - J_fd| / max |J_fd| = %.2e\n", c.name,
               states[0], states[1], states[2], rel);
   EXPECT_EQ(states[(int)c.expected], states[0] + states[1] + states[2])
       << "not every integration point is in the intended state";
   EXPECT_LT(rel, 1e-6);
+  const int all = states[0] + states[1] + states[2];
+  EXPECT_EQ(dilated, std::atof(c.dilation_angle) > 0.0 ? all : 0) << "points that dilate";
+  EXPECT_EQ(past_limit, *c.dilation_limit ? all : 0) << "points past the dilation limit";
 }
 
 // Contact pressure K_N 1e-6 = 1e4 Pa, friction limit 5e3 Pa; stick: K_T g_T = 500 Pa;
@@ -222,5 +237,44 @@ INSTANTIATE_TEST_SUITE_P(States, InterfaceJacobian,
                                                 "gauss",
                                                 {1e-5, 2e-6, 1e-6},
                                                 physics::ContactState::open,
-                                                12.0}),
+                                                12.0},
+                                           // Shear dilation, psi = 10 deg: the slip of the step
+                                           // (7.7e-6 m in 2D) lifts the pressure; with a limit
+                                           // of 3e-6 m it is reached within the step.
+                                           Case{"slip2d_gauss_dilatant",
+                                                "block_on_base_2d.geo",
+                                                "gauss",
+                                                {1e-5, -1e-6, 0},
+                                                physics::ContactState::slip,
+                                                1.0,
+                                                "10"},
+                                           Case{"slip2d_nodal_dilatant",
+                                                "block_on_base_2d.geo",
+                                                "nodal",
+                                                {-1e-5, -1e-6, 0},
+                                                physics::ContactState::slip,
+                                                1.0,
+                                                "10"},
+                                           Case{"slip2d_gauss_dilation_limit",
+                                                "block_on_base_2d.geo",
+                                                "gauss",
+                                                {1e-5, -1e-6, 0},
+                                                physics::ContactState::slip,
+                                                1.0,
+                                                "10",
+                                                "3e-6"},
+                                           Case{"slip3d_gauss_dilatant",
+                                                "block_on_base_3d.geo",
+                                                "gauss",
+                                                {1e-5, -7e-6, -1e-6},
+                                                physics::ContactState::slip,
+                                                12.0,
+                                                "10"},
+                                           Case{"slip3d_nodal_tet_dilatant",
+                                                "block_on_base_3d_tet.geo",
+                                                "nodal",
+                                                {-6e-6, 9e-6, -1e-6},
+                                                physics::ContactState::slip,
+                                                12.0,
+                                                "25"}),
                          [](const auto &info) { return std::string(info.param.name); });
