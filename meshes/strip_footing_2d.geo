@@ -1,6 +1,6 @@
 // Strip footing on a weightless soil, plane strain, half model (x = 0 is the symmetry plane):
 // soil 0 <= x <= W, -D <= y <= 0, footing of half-width b on the surface at 0 <= x <= b.
-// Structured grid: N columns of equal width b/N under the footing, then columns growing by
+// Structured grid (42 x 24 cells at factor 1): N = 14 columns of equal width b/N under the footing, then columns growing by
 // the ratio g to x = W; rows of height b/N at the surface growing by g to y = -D.
 // Each grid cell is split into four triangles by its diagonals ("crossed triangles", the
 // default, crossed = 1), or is one quadrilateral (crossed = 0). Crossed triangles have no
@@ -11,7 +11,7 @@
 // Physical curves: footing (0 <= x <= b, y = 0), surface (b <= x <= W, y = 0), left (x = 0),
 // right (x = W), bottom (y = -D); physical surface: soil. Counts scale with -clscale.
 b = 1.0; W = 10.0; D = 6.0;
-If (!Exists(n)) n = 10; EndIf    // cells under the footing at factor 1
+If (!Exists(n)) n = 14; EndIf    // cells under the footing at factor 1
 If (!Exists(g)) g = 1.1; EndIf   // growth ratio of the cells away from the footing
 If (!Exists(crossed)) crossed = 1; EndIf
 f = Mesh.CharacteristicLengthFactor;

@@ -9,8 +9,9 @@
 
 namespace poroseam {
 
-/// Writes `<dir>/interfaces.h5` and `<dir>/interfaces.xmf`: two grids, each an XDMF temporal
-/// collection in the same Domain (ParaView shows them as two blocks):
+/// Writes `<dir>/interfaces.h5` and two XDMF files over it, `<dir>/interface_cells.xmf` and
+/// `<dir>/interface_points.xmf`, each one temporal collection (meshio reads one grid per file;
+/// ParaView opens both):
 ///  - "interface_cells": one cell per cohesive cell, its side-1 face (Polyline of 2 nodes in
 ///    2D; Triangle or Quadrilateral in 3D, or XDMF "Mixed" topology when the interfaces have
 ///    both). Nodes are duplicated per cell (cell i's nodes follow cell i-1's). Cell data are
@@ -19,6 +20,9 @@ namespace poroseam {
 ///    mean p'_N of the cell, 0 where mean p'_N = 0).
 ///  - "interface_points": every integration point as a Polyvertex at its position x, with
 ///    the same quantities unaveraged (mobilised_friction = |tau| / p'_N there).
+/// Both grids carry displacement_minus and displacement_plus, the displacements of side 1 and
+/// side 2 (at the cell grid's nodes, interpolated at the points), to warp the interface with
+/// the bulk, and the id of each cell's named part (`part`, names in an HDF5 attribute).
 /// When some interface has flow (Scene::hasInterfacePressure()) both grids also carry
 /// interface_pressure, aperture, aperture_rate, longitudinal_flux (3-vector), transversal_flux1
 /// and transversal_flux2 (cell values: weighted averages; 0 on interfaces without flow and

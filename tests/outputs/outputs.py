@@ -2,7 +2,7 @@
 NaN pressure outside porous regions, both faces' displacements on the interfaces, units, and
 every XDMF file read by meshio.
 
-    outputs.py --case geostatic | terzaghi | ranks | meshio
+    outputs.py --case geostatic | terzaghi | ranks | meshio | petsc_vtk
 
 geostatic: the K0 column at rest (tests/physics/geostatic_2d.opts, one layer, and
     geostatic_layers_2d.opts, three layers of different density, K0 and alpha), water level at
@@ -34,6 +34,11 @@ meshio: meshio (Debian python3-meshio) reads every XDMF file a run writes, all t
     CSV column, pressure is NaN exactly at the vertices no porous cell touches, and
     displacement_minus / displacement_plus equal the bulk displacement of a vertex of side 1 /
     side 2 at the same place. Skips (exit 77) when meshio is not installed.
+petsc_vtk: -ts_monitor_solution_vtk on the coarse axisymmetric caisson (partially drained,
+    2 steps, 2 ranks) writes the displacements and pressures of fields.h5: at every VTU
+    point those of a fields.h5 vertex at the same place, exactly, NaN pressure on the steel
+    (before, the residual's reactions, 1e8, showed at prescribed dofs, and the steel's
+    displacement as its pressure). meshio reads the VTU files; skips without it.
 """
 import argparse
 import csv
@@ -337,13 +342,45 @@ def case_meshio(chk):
         check_faces(chk, label, out)
 
 
+def case_petsc_vtk(chk):
+    try:
+        import meshio
+    except ImportError:
+        print("SKIP: meshio is not installed (Debian package python3-meshio): cannot read the VTU files")
+        sys.exit(SKIP)
+    scene = os.path.join(common.SOURCE, "options", "caisson_axisym_partially_drained.opts")
+    for ranks in (2,):  # PETSc's VTK writer gathers the ranks' pieces: the harder case
+        out = common.output_dir(f"outputs_petsc_vtk_np{ranks}")
+        common.run(scene, out, ["-mesh_size_factor", 2, "-ts_dt", 6, "-ts_max_time", 12, "-output_fields_every", 1,
+                                "-ts_monitor_solution_vtk", os.path.join(out, "sol-%03d.vtu")], ranks=ranks)
+        f = read_fields(out)
+        at = defaultdict(list)
+        for i, x in enumerate(f.coordinates):
+            at[tuple(np.round(x, 9))].append(i)
+        worst, scale, unmatched = 0.0, 0.0, 0
+        for k in range(len(f.times)):
+            u, p = f.fields[k]["displacement"], f.fields[k]["pressure"]
+            m = meshio.read(os.path.join(out, "sol-%03d.vtu" % k))
+            v = m.point_data["solutiondisplacement"]
+            q = next(a for n, a in m.point_data.items() if n.startswith("solutionpressure")).reshape(-1)
+            scale = max(scale, np.max(np.abs(u)))
+            for i, x in enumerate(m.points):
+                here = at[tuple(np.round(x[:2], 9))]
+                worst = max(worst, min(np.max(np.abs(v[i, :2] - u[j, :2])) for j in here))
+                unmatched += not any(q[i] == p[j] or (np.isnan(q[i]) and np.isnan(p[j])) for j in here)
+        chk.check(f"{ranks} rank(s): max |u VTU - u fields.h5| over {len(f.times)} steps (max |u| {scale:.3g} m)",
+                  worst, 0.0)
+        chk.check(f"{ranks} rank(s): VTU pressures unlike fields.h5's there (NaN on the steel)",
+                  float(unmatched), 0)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--case", required=True, choices=["geostatic", "terzaghi", "ranks", "meshio"])
+    ap.add_argument("--case", required=True, choices=["geostatic", "terzaghi", "ranks", "meshio", "petsc_vtk"])
     args = ap.parse_args()
     chk = common.Checks(f"outputs: {args.case}")
     {"geostatic": case_geostatic, "terzaghi": case_terzaghi, "ranks": case_ranks,
-     "meshio": case_meshio}[args.case](chk)
+     "meshio": case_meshio, "petsc_vtk": case_petsc_vtk}[args.case](chk)
     chk.finish()
 
 

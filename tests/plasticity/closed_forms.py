@@ -34,6 +34,7 @@ grows with R).
 """
 
 import math
+import sys
 
 import numpy as np
 
@@ -138,20 +139,29 @@ class CylindricalCavity:
 
 
 if __name__ == "__main__":
-    # Self-checks of the algebra: continuity at first yield, the Tresca limit of the frictional
-    # solution, and the classical infinite-medium numbers.
-    print("N_c(0) =", prandtl_bearing_factor(0.0), " N_c(20) =", prandtl_bearing_factor(20.0),
-          " N_c(30) =", prandtl_bearing_factor(30.0))
-    cav = CylindricalCavity(1e7, 0.3, 10e3, 30, 5, 0.0, 1.0, 20.0)
-    print("yield: p =", cav.state(1.0)[0], "u =", cav.yield_displacement(),
-          "(c cos phi (1 + nu) a / E =", 10e3 * math.cos(math.radians(30)) * 1.3 / 1e7, ")")
-    for u in (0.005, 0.01, 0.02, 0.04):
-        p, R = cav.pressure(u)
-        print(f"u_a = {u}: p = {p:.1f} Pa, R/a = {R:.3f}")
-    t0 = CylindricalCavity(1e7, 0.3, 10e3, 0, 0, 0.0, 1.0, 1e6)
-    t1 = CylindricalCavity(1e7, 0.3, 10e3, 1e-6, 0, 0.0, 1.0, 1e6)
+    # Self-checks of the algebra against independent results: Prandtl's numbers, the first
+    # yield of a cavity in an infinite medium (p0 (1 + sin phi) + c cos phi), the classical
+    # incompressible Tresca solution p = c (1 + ln(2 G u_a / (c a))) (small strain, nu -> 1/2,
+    # b -> infinity), and the Tresca limit phi -> 0 of the frictional formulas.
+    def close(name, got, want, rtol):
+        ok = abs(got - want) <= rtol * abs(want)
+        print(f"{'ok  ' if ok else 'FAIL'} {name}: {got:.10g} (expected {want:.10g})")
+        return ok
+
+    checks = [close("N_c(0)", prandtl_bearing_factor(0.0), math.pi + 2, 1e-15),
+              close("N_c(20 deg)", prandtl_bearing_factor(20.0), 14.8347, 1e-5),
+              close("N_c(30 deg)", prandtl_bearing_factor(30.0), 30.1396, 1e-5)]
+    deep = CylindricalCavity(1e7, 0.3, 1e4, 30, 10, 1e5, 1.0, 1e7)
+    checks.append(close("first yield, p0 = 100 kPa", deep.state(1.0)[0],
+                        1e5 * 1.5 + 1e4 * math.cos(math.radians(30)), 1e-9))
+    nu = 0.4999999
+    G = 1e7 / (2 * (1 + nu))
+    tresca = CylindricalCavity(1e7, nu, 1e4, 0, 0, 0.0, 1.0, 1e7)
     for u in (0.005, 0.02):
-        print(f"Tresca u = {u}: p = {t0.pressure(u)[0]:.3f}, phi = 1e-6 deg: {t1.pressure(u)[0]:.3f}")
-    # Infinite medium, Tresca, incompressible-plastic: p = c (1 + ln(G / c)) at large
-    # expansion in the large-strain theory; in small strain p = c + 2 c ln(R / a) with
-    # (R / a)^2 = u_a / u_R ... printed for orientation only.
+        checks.append(close(f"incompressible Tresca, u_a = {u}", tresca.pressure(u)[0],
+                            1e4 * (1 + math.log(2 * G * u / 1e4)), 1e-6))
+    t0 = CylindricalCavity(1e7, 0.3, 1e4, 0, 0, 0.0, 1.0, 1e3)
+    t1 = CylindricalCavity(1e7, 0.3, 1e4, 1e-7, 0, 0.0, 1.0, 1e3)
+    checks.append(close("phi -> 0 limit, u_a = 0.01", t1.pressure(0.01)[0], t0.pressure(0.01)[0],
+                        1e-6))
+    sys.exit(0 if all(checks) else 1)

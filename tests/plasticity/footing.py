@@ -3,22 +3,27 @@
 A rigid smooth footing of half-width b on a stress-free weightless soil (half model, plane
 strain) is pushed down by a prescribed settlement; the mean footing pressure q = -footing.Fy /
 b must level off at the closed-form collapse pressure N_c c (tests/plasticity/closed_forms.py):
-    --case tresca      phi = psi = 0:           N_c = pi + 2 = 5.14  (settlement 5 % of b)
-    --case frictional  phi = psi = 20 deg:      N_c = 14.83          (settlement 10 % of b)
+    --case tresca      phi = psi = 0:           N_c = pi + 2 = 5.14  (settlement 8 % of b, 32 steps)
+    --case frictional  phi = psi = 20 deg:      N_c = 14.83          (settlement 12 % of b, 40 steps)
 (associated flow: the limit theorems that give N_c assume it). Mesh: meshes/strip_footing_2d.geo,
-crossed triangles (35 x 21 cells, 2940 triangles at factor 1); --quads meshes the same grid
+crossed triangles (42 x 24 cells, 4032 triangles at factor 1, 14 cells under the footing); --quads meshes the same grid
 with bilinear quadrilaterals instead (they lock: see the .geo), for comparison only.
 Checks: |q_end / (N_c c) - 1| <= 5 % (the issue's tolerance on a moderate mesh); the curve has
-levelled off (q grows by less than 1 % over the last fifth of the settlement), so q_end is a
+levelled off (q grows by less than 0.5 % over the last quarter of the settlement), so q_end is a
 collapse pressure and not a point on a still rising curve. Prints the Newton residual history
-(-snes_monitor) of the last step and of the step with the most iterations, and the observed
-convergence orders: Newton with the consistent tangent converges quadratically near the
-solution, checked as the median observed order of the plastic steps >= 1.5.
+(-snes_monitor) of the last step and of the step with the most iterations. Newton with the
+consistent tangent ends each step quadratically (the digits double); checked as: in every step
+the last iteration reduces the residual at least 100-fold (measured: median 4e-6, largest
+9e-4 (Tresca) and 2e-3 (phi = 20 deg); a wrong tangent converges by a roughly constant factor).
+The active set of the piecewise-linear return changes in the first iterations, which are
+slower.
 """
 import argparse
 import os
 import statistics
 import sys
+
+import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "verification"))
@@ -28,8 +33,8 @@ import common  # noqa: E402
 import newton_history  # noqa: E402
 
 B, C = 1.0, 1e4
-CASES = {"tresca": dict(phi=0.0, settlement=0.05, steps=50),
-         "frictional": dict(phi=20.0, settlement=0.10, steps=50)}
+CASES = {"tresca": dict(phi=0.0, settlement=0.08, steps=32),
+         "frictional": dict(phi=20.0, settlement=0.12, steps=40)}
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--case", choices=sorted(CASES), default="tresca")
@@ -56,7 +61,7 @@ common.run(os.path.join(HERE, "strip_footing.opts"), out, extra, ranks=args.rank
 ts = common.read_timeseries(out)
 time = common.column(ts, "time")
 q = -common.column(ts, "footing.Fy") / B
-settlement = case["settlement"] * time
+settlement = case["settlement"] * np.minimum(time, 1.0)  # the ramp holds after t = 1
 nc = closed_forms.prandtl_bearing_factor(case["phi"])
 q_u = nc * C
 print(f"  closed form: N_c = {nc:.4f}, q_u = {q_u:.1f} Pa")
@@ -68,22 +73,18 @@ print(f"    {1e3 * settlement[-1]:7.2f}  {q[-1] / 1e3:8.3f}  {q[-1] / q_u:.4f}  
 chk = common.Checks(f"strip footing, {args.case} (phi = {case['phi']:g} deg)"
                     f"{', quadrilaterals' if args.quads else ''}")
 chk.check("|q_end / (N_c c) - 1|", abs(q[-1] / q_u - 1.0), 0.05)
-i80 = int(round(0.8 * (len(q) - 1)))
-chk.check("levelled off: (q_end - q(0.8 settlement)) / q_end", (q[-1] - q[i80]) / q[-1], 0.01)
+i75 = int(np.argmin(np.abs(settlement - 0.75 * settlement[-1])))
+chk.check("levelled off: (q_end - q(0.75 settlement)) / q_end", (q[-1] - q[i75]) / q[-1], 0.005)
 
 hist = newton_history.histories(os.path.join(out, "log.txt"))
 its = common.column(ts, "newton_its")
-plastic_orders = []
-for step, res in hist:
-    if len(res) >= 3:
-        plastic_orders += newton_history.orders(res, floor=1e3 * 1e-9 * q_u * B)
-worst = max(hist, key=lambda h: len(h[1]))
 print("  Newton residual norms:")
 print("    " + newton_history.describe(*hist[-1]))
-print("    " + newton_history.describe(*worst) + " (most iterations)")
+print("    " + newton_history.describe(*max(hist, key=lambda h: len(h[1]))) + " (most iterations)")
 print(f"  Newton iterations per step: max {int(its.max())}, mean {its.mean():.2f}")
-if plastic_orders:
-    print("  observed orders: " + ", ".join(f"{o:.2f}" for o in plastic_orders))
-    chk.check("quadratic convergence: -(median observed order)",
-              -statistics.median(plastic_orders), -1.5)
+last = newton_history.last_reductions(hist)
+print(f"  last iteration's reduction r_n / r_n-1 over the steps: median {statistics.median(last):.1e},"
+      f" largest {max(last):.1e}")
+chk.check("every step's last Newton iteration reduces the residual >= 100 x (quadratic end)",
+          max(last), 1e-2)
 chk.finish()

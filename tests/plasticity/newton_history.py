@@ -1,8 +1,7 @@
 """Newton residual histories from a poroseam log run with -snes_monitor: one list of residual
-norms per accepted or attempted step (the lines '  k SNES Function norm r' before each
-'step ...' line), and the observed order of convergence near the end of each solve."""
+norms per step (the lines '  k SNES Function norm r' before each 'step ...' line), and the
+reduction of the residual by each step's last Newton iteration."""
 
-import math
 import re
 
 NORM = re.compile(r"^\s*(\d+) SNES Function norm ([0-9.eE+-]+)")
@@ -29,16 +28,11 @@ def histories(log_path):
     return out
 
 
-def orders(residuals, floor):
-    """Observed orders log(r_k+1 / r_k) / log(r_k / r_k-1) for the iterations whose residuals
-    are all above `floor` (below it round-off, not Newton, sets the residual)."""
-    q = []
-    for k in range(1, len(residuals) - 1):
-        r0, r1, r2 = residuals[k - 1], residuals[k], residuals[k + 1]
-        if min(r0, r1, r2) <= floor or r1 >= r0:
-            continue
-        q.append(math.log(r2 / r1) / math.log(r1 / r0))
-    return q
+def last_reductions(hist):
+    """r_n / r_(n-1) of the last iteration of every step that took at least one: Newton with the
+    consistent tangent ends each step with a reduction by orders of magnitude (the digits
+    double), a fixed-point-like iteration (wrong tangent) by a roughly constant factor."""
+    return [res[-1] / res[-2] for _, res in hist if len(res) >= 2 and res[-2] > 0]
 
 
 def describe(step, residuals):

@@ -630,3 +630,26 @@ TEST(MohrCoulomb, ParameterErrorsNameTheValue)
   p.elastic.shear = 0.0;
   EXPECT_NE(mohrCoulombParameterError(p).find("shear modulus"), std::string::npos);
 }
+
+TEST(MohrCoulomb, EverySextantOfThePyramidReturnsToItsOwnFace)
+{
+  // The six faces of the Mohr-Coulomb pyramid are the six orderings of the principal
+  // stresses over the axes x, y, z: the face case with its principal values assigned to the
+  // axes in each order returns to the same values on the same axes.
+  const ReturnCase rc = returnCases()[0];
+  const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto &o : orders) {
+    double P[3][3] = {}; // axis o[a] carries principal value a
+    for (int a = 0; a < 3; ++a)
+      P[o[a]][a] = 1.0;
+    double strain[3][3];
+    const SkeletonResponse r = respond(rc.p, P, trialOf(rc), strain);
+    EXPECT_EQ(r.state, YieldState::face);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(r.stress[o[a]][o[a]], rc.y0[a], 1e-9 * 1e5);
+      EXPECT_NEAR(r.updated.plastic_strain[o[a]][o[a]], rc.g[a], 1e-13);
+    }
+    EXPECT_NEAR(r.stress[0][1], 0.0, 1e-9 * 1e5);
+    expectTangentMatchesDifferences(rc.p, kZero, SkeletonHistory{}, strain, "sextant");
+  }
+}
