@@ -313,6 +313,17 @@ def case_axisym_drained_mohr_coulomb(args):
     chk.check("yielded cells in the steel", float(np.sum(plastic & (region == steel))), 0)
     far = plastic & ((np.abs(r - 0.5 * (R_IN + R_OUT)) > 4.0) | (z < -SKIRT - 1.5))
     chk.check("yielded cells farther than 4 m from the skirt or 1.5 m below its tip", float(np.sum(far)), 0)
+    # scripts/plot_plastic_caisson runs on it (compared with itself: every ratio is 1)
+    exe = os.path.join(common.SOURCE, "scripts", "plot_plastic_caisson")
+    figures = ["plastic_caisson_forces.png", "plastic_caisson_gap.png", "plastic_caisson_newton.png",
+               "plastic_caisson.csv", "plastic_caisson_newton.csv"]
+    plots = os.path.join(run.out, "compare")
+    r = subprocess.run([sys.executable, exe, "--drained", run.out, run.out, "--out", plots],
+                       capture_output=True, text=True)
+    print("\n".join("    " + line for line in (r.stdout + r.stderr).strip().splitlines()[-6:]))
+    missing = [f for f in figures if not os.path.isfile(os.path.join(plots, f))]
+    chk.check(f"scripts/plot_plastic_caisson exits 0 and writes {len(figures)} files (missing: {len(missing)})",
+              float(len(missing) + (r.returncode != 0)), 0)
     chk.finish()
 
 
