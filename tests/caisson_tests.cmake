@@ -23,7 +23,8 @@ poroseam_scene_test(caisson.quarter_vs_axisym "caisson"
 
 # Axisymmetric, drained, Mohr-Coulomb soil (issue 13): equilibrium and the drained plateau as
 # above, the plastic zone around the skirt, Newton iterations within the recorded counts, the
-# run ending at -ts_max_time after the cut-back of its first step. About 25 s on 2 quiet cores.
+# run ending at -ts_max_time after the cut-back of its first step. 4 s on 2 idle cores (52-122 s
+# measured while 4 other agents loaded them).
 poroseam_scene_test(caisson.axisym_drained_mohr_coulomb "caisson;plasticity"
                     caisson/caisson.py --case axisym_drained_mohr_coulomb --ranks 2)
 
