@@ -21,7 +21,15 @@ poroseam_scene_test(caisson.quarter_partially_drained "caisson"
 poroseam_scene_test(caisson.quarter_vs_axisym "caisson"
                     caisson/caisson.py --case quarter_vs_axisym --ranks 2)
 
+# Axisymmetric, drained, Mohr-Coulomb soil (issue 13): equilibrium and the drained plateau as
+# above, the plastic zone around the skirt, Newton iterations within the recorded counts, the
+# run ending at -ts_max_time after the cut-back of its first step. 4 s on 2 idle cores (52-122 s
+# measured while 4 other agents loaded them).
+poroseam_scene_test(caisson.axisym_drained_mohr_coulomb "caisson;plasticity"
+                    caisson/caisson.py --case axisym_drained_mohr_coulomb --ranks 2)
+
 set_tests_properties(caisson.axisym_drained caisson.axisym_partially_drained
+                     caisson.axisym_drained_mohr_coulomb
                      caisson.quarter_partially_drained caisson.quarter_vs_axisym PROPERTIES PROCESSORS 2 TIMEOUT 600)
 
 # The partially drained caissons again with the iterative preset options/solvers/fieldsplit.opts

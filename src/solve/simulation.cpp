@@ -238,8 +238,14 @@ PetscErrorCode postStep(TS ts)
   PetscCall(DMRestoreLocalVector(run.dm, &local));
   // Fixed steps: after a cut-back the step grows again, by 2 per accepted step, up to the
   // nominal size. Adaptive steps: TSAdapt has chosen the next step.
-  if (!run.time.adaptive() && dt < run.nominal_dt)
-    PetscCall(TSSetTimeStep(ts, std::min(run.nominal_dt, 2.0 * dt)));
+  // Never past the final time: TS (TS_EXACTFINALTIME_MATCHSTEP) clipped its next step to land
+  // on -ts_max_time before this hook ran, and growing it again overshot (measured: a cut first
+  // step of 6 s, then 12 s, ended a run with -ts_max_time 12 at t = 18 s).
+  if (!run.time.adaptive() && dt < run.nominal_dt) {
+    double next = std::min(run.nominal_dt, 2.0 * dt);
+    if (run.t_end - t > 0.0) next = std::min(next, run.t_end - t);
+    PetscCall(TSSetTimeStep(ts, next));
+  }
   if (checkpoint) {
     std::string path;
     PetscCall(beginLogEvent(run.events.output));

@@ -39,6 +39,13 @@ Quarter against axisymmetric (quarter_vs_axisym, drained): 4 x the quarter model
 Delta F_ext, Delta F_int against the axisymmetric ones (default mesh, same steps) at the end
 (2 mm of uplift, both skirts sliding), within 5 %.
 
+Mohr-Coulomb soil (axisym_drained_mohr_coulomb: options/caisson_axisym_drained_mohr_coulomb.opts,
+0.2 mm steps to 2 mm): the same vertical equilibrium and drained plateau (the interface's Coulomb
+law does not depend on the soil's), the plastic zone where the skirt shears the soil (yielded
+cells in the plug and outside the skirt, none in the steel, none farther than 4 m from the
+skirt or 1.5 m below its tip), the run ending at -ts_max_time after its cut-back, and Newton
+iterations within the recorded counts (deterministic for a mesh and number of ranks).
+
 --plot also runs scripts/plot_caisson on the outputs (must exit 0 and write its figures).
 """
 import argparse
@@ -210,7 +217,27 @@ def case_axisym_drained(args):
     ts = run.ts
     chk.check("cut-backs", float(ts["rejected"].sum()), 0)
     equilibrium(chk, run, "drained")
-    # drained plateau
+    Fext = drained_plateau(chk, run)
+    mob = full_mobilisation(run)
+    if mob is None:
+        chk.check("outer skirt fully mobilised within the run", 1.0, 0)
+    else:
+        u, up, open_len, nc, n = mob
+        k_peak = int(np.argmax(Fext))
+        print(f"  outer skirt fully mobilised (every contact point in slip) at {u:.2f} mm of uplift (not yet at "
+              f"{up:.2f} mm); paper: {PAPER_MOBILISED_MM} mm. Then {nc} of {n} points in contact, the top "
+              f"{open_len:.2f} m open; Delta F_ext peaks at {run.uplift[k_peak] * 1e3:.2f} mm")
+        chk.check(f"uplift at full mobilisation of the outer skirt (reported; paper {PAPER_MOBILISED_MM} mm) "
+                  "in [0.2, 2] mm", u, 2.0, ok=0.2 <= u <= 2.0, unit=" mm")
+    if args.plot:
+        plot(chk, run, ["fig6a_forces.png", "fig7_mobilised_friction.png", "fig9b_lid_flux.png"])
+    chk.finish()
+
+
+def drained_plateau(chk, run):
+    """The drained plateau: F_ext = mu int p'_N over the fully mobilised output steps (1 %).
+    Returns the outer skirt's vertical force per step."""
+    ts = run.ts
     ifc = run.interfaces()
     Fext = run.F("outer_skirt")
     print(f"  outer skirt: initial vertical force F_ext(0) = {Fext[0]:.4g} N (no initial shear), "
@@ -234,19 +261,70 @@ def case_axisym_drained(args):
               f"mu int p'_N = {fr / 1e3:.2f} kN ({len(rels)} fully mobilised output steps)")
         chk.check("drained plateau: max |F_ext - mu int p'_N| / (mu int p'_N) over fully mobilised steps",
                   float(max(rels)), 1e-2)
-    mob = full_mobilisation(run)
-    if mob is None:
-        chk.check("outer skirt fully mobilised within the run", 1.0, 0)
-    else:
-        u, up, open_len, nc, n = mob
-        k_peak = int(np.argmax(Fext))
-        print(f"  outer skirt fully mobilised (every contact point in slip) at {u:.2f} mm of uplift (not yet at "
-              f"{up:.2f} mm); paper: {PAPER_MOBILISED_MM} mm. Then {nc} of {n} points in contact, the top "
-              f"{open_len:.2f} m open; Delta F_ext peaks at {run.uplift[k_peak] * 1e3:.2f} mm")
-        chk.check(f"uplift at full mobilisation of the outer skirt (reported; paper {PAPER_MOBILISED_MM} mm) "
-                  "in [0.2, 2] mm", u, 2.0, ok=0.2 <= u <= 2.0, unit=" mm")
-    if args.plot:
-        plot(chk, run, ["fig6a_forces.png", "fig7_mobilised_friction.png", "fig9b_lid_flux.png"])
+    return Fext
+
+
+def case_axisym_drained_mohr_coulomb(args):
+    """The drained axisymmetric caisson with Mohr-Coulomb soil, coarse (see the module docstring)."""
+    import fields_reader  # tests/support
+    chk = common.Checks(f"caisson, axisymmetric, drained, Mohr-Coulomb soil (mesh factor {args.factor}, "
+                        f"{args.ranks} ranks)")
+    # 0.2 mm per step to 2 mm; interface and field output every step
+    end = 120.0
+    run = Run(scene("caisson_axisym_drained_mohr_coulomb.opts"), "caisson_axisym_drained_mohr_coulomb",
+              ["-mesh_size_factor", args.factor, "-ts_dt", 12, "-ts_max_time", end, "-ts_max_steps", 20,
+               "-output_fields_every", 1], args.ranks)
+    ts = run.ts
+    newton = np.asarray(ts["newton_its"][1:], float)
+    print(f"  Newton iterations per step (cut attempts included): {' '.join(str(int(n)) for n in newton)}; "
+          f"{int(newton.sum())} in all; cut-backs {int(ts['rejected'].sum())}")
+    # Recorded on this mesh (factor 2, 2 ranks): the first step (0.2 mm, the caisson's weight
+    # and the onset of yield together) is cut once: at its second Newton iterate no point of
+    # the direction lowers the residual (8.4e4 N; 8.9e4 just past the first contact kink at
+    # lambda = 1e-4, and at every halving to 1/1024), the non-smoothness of points switching
+    # between the plastic and the elastic branch; the 6 s step converges in 6 iterations.
+    # Then 40 Newton iterations in all (7 9 6 7 5 1 1 1 1 1 1), the elastic scene 21 in 10
+    # steps. Bounds: the cut-back count, the largest step, the total + 10 %.
+    chk.check("cut-backs (recorded: 1, the first step)", float(ts["rejected"].sum()), 1)
+    chk.check("most Newton iterations of a step (recorded 9)", float(newton.max()), 9)
+    chk.check("Newton iterations in all (recorded 40, bound + 10 %)", float(newton.sum()), 44)
+    # after the cut-back the steps grow back to the nominal size and land on -ts_max_time
+    chk.check("the run ends at -ts_max_time, |t_end - 120 s|", abs(float(ts["time"][-1]) - end), 1e-9, unit=" s")
+    equilibrium(chk, run, "drained, plastic")
+    drained_plateau(chk, run)
+    # The plastic zone: the soil the skirt shears, inside (at the tip) and outside the skirt;
+    # not in the steel, nowhere far from the skirt.
+    try:
+        f = fields_reader.read_fields(run.out)
+    except fields_reader.FieldsError as e:
+        common.fail(f"{run.out}: {e}")
+    cells = f.cell_fields[-1]
+    centre = f.coordinates[f.connectivity].mean(axis=1)
+    r, z = centre[:, 0], centre[:, 1]
+    plastic = cells["equivalent_plastic_strain"].ravel() > 0
+    region = cells["region"].astype(int).ravel()
+    steel = f.region_names.index("caisson")
+    states = np.bincount(cells["yield_state"].astype(int).ravel(), minlength=5)
+    print(f"  last step: {int(plastic.sum())} of {len(plastic)} cells have yielded (max equivalent plastic strain "
+          f"{np.max(cells['equivalent_plastic_strain']):.3g}), r {r[plastic].min():.2f}-{r[plastic].max():.2f} m, "
+          f"z {z[plastic].min():.2f}-{z[plastic].max():.2f} m; yielding now: face {states[1]}, edge {states[2]}, "
+          f"apex {states[3]}, cut-off {states[4]}")
+    chk.check("yielded cells in the plug (r < R_int), negated", -float(np.sum(plastic & (r < R_IN))), -1)
+    chk.check("yielded cells outside the skirt (r > R_o), negated", -float(np.sum(plastic & (r > R_OUT))), -1)
+    chk.check("yielded cells in the steel", float(np.sum(plastic & (region == steel))), 0)
+    far = plastic & ((np.abs(r - 0.5 * (R_IN + R_OUT)) > 4.0) | (z < -SKIRT - 1.5))
+    chk.check("yielded cells farther than 4 m from the skirt or 1.5 m below its tip", float(np.sum(far)), 0)
+    # scripts/plot_plastic_caisson runs on it (compared with itself: every ratio is 1)
+    exe = os.path.join(common.SOURCE, "scripts", "plot_plastic_caisson")
+    figures = ["plastic_caisson_forces.png", "plastic_caisson_gap.png", "plastic_caisson_newton.png",
+               "plastic_caisson.csv", "plastic_caisson_newton.csv"]
+    plots = os.path.join(run.out, "compare")
+    r = subprocess.run([sys.executable, exe, "--drained", run.out, run.out, "--out", plots],
+                       capture_output=True, text=True)
+    print("\n".join("    " + line for line in (r.stdout + r.stderr).strip().splitlines()[-6:]))
+    missing = [f for f in figures if not os.path.isfile(os.path.join(plots, f))]
+    chk.check(f"scripts/plot_plastic_caisson exits 0 and writes {len(figures)} files (missing: {len(missing)})",
+              float(len(missing) + (r.returncode != 0)), 0)
     chk.finish()
 
 
@@ -329,7 +407,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--case", required=True,
                     choices=["axisym_drained", "axisym_partially_drained", "quarter_partially_drained",
-                             "quarter_vs_axisym"])
+                             "quarter_vs_axisym", "axisym_drained_mohr_coulomb"])
     ap.add_argument("--ranks", type=int, default=2)
     ap.add_argument("--factor", type=float, default=2.0, help="-mesh_size_factor (coarsening)")
     ap.add_argument("--plot", action="store_true", help="also run scripts/plot_caisson on the output")
@@ -337,7 +415,8 @@ def main():
     {"axisym_drained": case_axisym_drained,
      "axisym_partially_drained": lambda a: case_partially_drained(a, False),
      "quarter_partially_drained": lambda a: case_partially_drained(a, True),
-     "quarter_vs_axisym": case_quarter_vs_axisym}[args.case](args)
+     "quarter_vs_axisym": case_quarter_vs_axisym,
+     "axisym_drained_mohr_coulomb": case_axisym_drained_mohr_coulomb}[args.case](args)
 
 
 if __name__ == "__main__":
