@@ -33,6 +33,10 @@ public:
   /// separated, in index order). Collective; call after open(), before the first write().
   PetscErrorCode writeRegions(const std::vector<PetscInt> &cells, const std::vector<int> &region,
                               const std::vector<std::string> &names);
+  /// Names, units and shapes of the cell fields every write() will give (their values are
+  /// ignored), so that the XDMF index of a restarted run lists the cell fields of the steps
+  /// written before the restart even before its own first write.
+  void declareCellFields(const CellFields &cells);
   /// Times written so far (for checkpoints).
   std::vector<double> times() const;
   /// Appends one time: displacement, pressure (if any) and excess_pressure = pressure -

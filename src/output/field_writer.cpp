@@ -539,6 +539,17 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
   PetscFunctionReturn(0);
 }
 
+void FieldWriter::declareCellFields(const CellFields &cells)
+{
+  if (!impl_) return;
+  impl_->cellNames.clear();
+  for (const CellField &f : cells.fields) {
+    CellField name = f;
+    name.values.clear();
+    impl_->cellNames.push_back(name);
+  }
+}
+
 PetscErrorCode FieldWriter::writeRegions(const std::vector<PetscInt> &cells,
                                          const std::vector<int> &region,
                                          const std::vector<std::string> &names)

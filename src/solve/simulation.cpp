@@ -507,6 +507,11 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
     run.problem.cellRegions(cells, regions);
     for (const Region &r : run.scene.regions)
       names.push_back(r.name);
+    {
+      CellFields declared; // the names of the cell fields, from the initial state
+      PetscCall(run.problem.cellFields(run.initial, declared));
+      run.fields.declareCellFields(declared);
+    }
     PetscCall(run.fields.writeRegions(cells, regions, names));
     PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir, times));
   }
