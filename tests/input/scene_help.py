@@ -171,7 +171,10 @@ def main():
     left = os.listdir(scratch)
     if left:
         failures.append(f"left in TMPDIR: {left}")
-    print("\n".join(l for l in lines if "poroseam" in l or "-region_" in l or "-interface_" in l))
+    if failures:  # all of it, to see what took the place of a missing line
+        print("\n".join(lines))
+    else:
+        print("\n".join(l for l in lines if "poroseam" in l or "-region_" in l or "-interface_" in l))
     print(f"wall {wall:.1f} s, exit status {rc}")
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
