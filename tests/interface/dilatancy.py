@@ -69,17 +69,8 @@ D0, C_FLOW, U_FLOW = 1e-5, 1e-5, 5e-4
 P_LEFT, P_RIGHT, L = 2e4, 1e4, 1.0
 
 
-def table(out, name, times, values):
-    path = os.path.join(out, name)
-    with open(path, "w") as f:
-        f.write("time,factor\n")
-        for t, v in zip(times, values):
-            f.write(f"{t},{v!r}\n")
-    return path
-
-
 def cns_options(out, limit):
-    ux = table(out, "ux.csv", [0, 1, T_END], [0.0, 0.0, U_END])
+    ux = common.time_table(out, "ux.csv", [0, 1, T_END], [0.0, 0.0, U_END])
     extra = ["-bc_block_left_ux_table", ux, "-bc_block_right_ux_table", ux, "-ts_max_time", T_END]
     if limit:
         extra += ["-interface_joint_dilation_limit", SLIP_LIMIT]
@@ -151,7 +142,7 @@ def flow(args):
     # end outflows (10 significant digits in timeseries.csv) resolve the flow rate to 1e-10.
     steps, dt = 20, 1000.0
     t_end = (steps + 1) * dt
-    ux = table(out, "ux.csv", [0, dt, t_end], [0.0, 0.0, U_FLOW])
+    ux = common.time_table(out, "ux.csv", [0, dt, t_end], [0.0, 0.0, U_FLOW])
     extra = ["-bc_top_uy", -C_FLOW, "-bc_top_ux", 1, "-bc_top_ux_table", ux,
              "-interface_contact_dilation_angle", 10, "-ts_dt", dt, "-ts_max_time", t_end,
              "-ts_max_steps", 4 * (steps + 1), "-output_fields_every", 0]

@@ -20,7 +20,6 @@ Options: --factor (mesh size factor; cells along r = 60 / factor), --ranks, --ps
 import argparse
 import math
 import os
-import statistics
 import sys
 
 import numpy as np
@@ -69,15 +68,8 @@ chk.check("plastic steps: max |p / p_exact - 1|", err[~elastic].max(), 0.02)
 chk.check("plastic radius at the end reaches 4 a (the test covers a developed plastic zone)",
           -radius[-1] / A, -4.0)
 
-hist = newton_history.histories(os.path.join(out, "log.txt"))
 its = common.column(ts, "newton_its")
-print("  Newton residual norms:")
-print("    " + newton_history.describe(*hist[-1]))
-print("    " + newton_history.describe(*max(hist, key=lambda h: len(h[1]))) + " (most iterations)")
-print(f"  Newton iterations per step: max {int(its.max())}, mean {its.mean():.2f}")
-last = newton_history.last_reductions(hist)
-print(f"  last iteration's reduction r_n / r_n-1 over the steps: median {statistics.median(last):.1e},"
-      f" largest {max(last):.1e}")
+last = newton_history.report(os.path.join(out, "log.txt"), its)
 chk.check("Newton iterations per step (consistent tangent)", its.max(), 3)
 chk.check("every step's last Newton iteration reduces the residual >= 100 x (quadratic end)",
           max(last), 1e-2)

@@ -20,7 +20,6 @@ slower.
 """
 import argparse
 import os
-import statistics
 import sys
 
 import numpy as np
@@ -76,15 +75,8 @@ chk.check("|q_end / (N_c c) - 1|", abs(q[-1] / q_u - 1.0), 0.05)
 i75 = int(np.argmin(np.abs(settlement - 0.75 * settlement[-1])))
 chk.check("levelled off: (q_end - q(0.75 settlement)) / q_end", (q[-1] - q[i75]) / q[-1], 0.005)
 
-hist = newton_history.histories(os.path.join(out, "log.txt"))
 its = common.column(ts, "newton_its")
-print("  Newton residual norms:")
-print("    " + newton_history.describe(*hist[-1]))
-print("    " + newton_history.describe(*max(hist, key=lambda h: len(h[1]))) + " (most iterations)")
-print(f"  Newton iterations per step: max {int(its.max())}, mean {its.mean():.2f}")
-last = newton_history.last_reductions(hist)
-print(f"  last iteration's reduction r_n / r_n-1 over the steps: median {statistics.median(last):.1e},"
-      f" largest {max(last):.1e}")
+last = newton_history.report(os.path.join(out, "log.txt"), its)
 chk.check("every step's last Newton iteration reduces the residual >= 100 x (quadratic end)",
           max(last), 1e-2)
 chk.finish()

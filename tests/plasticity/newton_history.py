@@ -3,6 +3,7 @@ norms per step (the lines '  k SNES Function norm r' before each 'step ...' line
 reduction of the residual by each step's last Newton iteration."""
 
 import re
+import statistics
 
 NORM = re.compile(r"^\s*(\d+) SNES Function norm ([0-9.eE+-]+)")
 STEP = re.compile(r"^step\s+(\d+)\s")
@@ -37,3 +38,17 @@ def last_reductions(hist):
 
 def describe(step, residuals):
     return f"step {step}: " + ", ".join(f"{r:.2e}" for r in residuals)
+
+
+def report(log_path, newton_its):
+    """Prints a run's Newton record (the last step's and the longest step's residuals, the
+    iterations per step, the last iteration's reductions) and returns the reductions."""
+    hist = histories(log_path)
+    print("  Newton residual norms:")
+    print("    " + describe(*hist[-1]))
+    print("    " + describe(*max(hist, key=lambda h: len(h[1]))) + " (most iterations)")
+    print(f"  Newton iterations per step: max {int(newton_its.max())}, mean {newton_its.mean():.2f}")
+    last = last_reductions(hist)
+    print(f"  last iteration's reduction r_n / r_n-1 over the steps: median "
+          f"{statistics.median(last):.1e}, largest {max(last):.1e}")
+    return last

@@ -74,19 +74,10 @@ BOUNDS = {
 }
 
 
-def table(out, name, times, values):
-    path = os.path.join(out, name)
-    with open(path, "w") as f:
-        f.write("time,factor\n")
-        for t, v in zip(times, values):
-            f.write(f"{t},{v!r}\n")
-    return path
-
-
 def shear_stiff_ramp(out, chk):
     times, values = [0, 20, 26], [0, 4 * ONSET, 3.4 * ONSET]
     extra = ["-interface_contact_KN", K, "-interface_contact_KT", K,
-             "-bc_top_ux_table", table(out, "ux.csv", times, values), "-ts_max_time", times[-1],
+             "-bc_top_ux_table", common.time_table(out, "ux.csv", times, values), "-ts_max_time", times[-1],
              "-region_base_E", 1e24, "-region_block_E", 1e24,
              "-probe_below", "0.5,0.4999999", "-probe_above", "0.5,0.5000001"]
     return SHEAR, extra, times[-1], lambda ts: shear_ramp_checks(ts, chk)
@@ -111,7 +102,7 @@ def shear_stiff_reversals(out, chk):
     times = [0] + [4 * k for k in range(1, 51)]
     values = [0.0] + [1e-3 * (1 if k % 2 else -1) for k in range(1, 51)]
     extra = ["-interface_contact_KN", K, "-interface_contact_KT", K,
-             "-bc_top_ux_table", table(out, "ux.csv", times, values), "-ts_max_time", times[-1],
+             "-bc_top_ux_table", common.time_table(out, "ux.csv", times, values), "-ts_max_time", times[-1],
              "-region_base_E", 1e8, "-region_block_E", 1e8, "-region_base_nu", 0.3,
              "-region_block_nu", 0.3, "-bc_top_uy", -2e-4]
 

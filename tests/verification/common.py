@@ -177,3 +177,14 @@ class Checks:
 def fail(message):
     print("ERROR: " + message, file=sys.stderr, flush=True)
     sys.exit(1)
+
+
+def time_table(out, name, times, values):
+    """Writes a time function table (-bc_<b>_<q>_table: "time,factor" rows) into out and
+    returns its path."""
+    path = os.path.join(out, name)
+    with open(path, "w") as f:
+        f.write("time,factor\n")
+        for t, v in zip(times, values):
+            f.write(f"{t},{v!r}\n")
+    return path
