@@ -51,8 +51,7 @@ std::string optionParseError(const char *mess)
   while (!value.empty() && value.back() == ' ')
     value.pop_back();
   const std::string names = poroseam::optionsWithValue(value);
-  return (names.empty() ? "an option" : "option " + names) + " " + value + ": expected " +
-         expected;
+  return (names.empty() ? "an option" : "option " + names) + " " + value + ": expected " + expected;
 }
 
 /// Bad input and a run that cannot go on are the user's to fix, not ours to debug: say what
@@ -127,6 +126,12 @@ bool leaveLogPhases()
   return open;
 }
 
+/// PetscHelpPrintf on ranks other than 0: prints nothing.
+PetscErrorCode silentHelpPrintf(MPI_Comm, const char[], ...)
+{
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -145,6 +150,10 @@ int main(int argc, char **argv)
   PetscBool help_requested = PETSC_FALSE, has_mesh = PETSC_FALSE;
   PetscCall(PetscOptionsHasHelp(nullptr, &help_requested));
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-mesh", &has_mesh));
+  // Objects on PETSC_COMM_SELF (index sets of the field split, for one) print their options'
+  // help from every rank; rank 1's lines then landed in the middle of rank 0's listing, which
+  // Open MPI forwards in chunks, and cut some of its lines in two. Rank 0 speaks for all.
+  if (help_requested && worldRank() != 0) PetscHelpPrintf = silentHelpPrintf;
   // -help alone prints docs/scenes.md; with a scene, the run is set up (nothing written, no
   // step taken) and PETSc lists every option, poroseam's and its own, with its value.
   if (help_requested && !has_mesh) poroseam::printSceneHelp(PETSC_COMM_WORLD);

@@ -12,7 +12,9 @@ stops before the first step. A case passes when
       a time function, probe, output, checkpoint, Newton, PETSc's own), the output has the
       PETSc-style line "  -<name> <now VALUE : formerly DEFAULT>: description (...)" with the
       value the scene file or command line gives and a description with its unit,
-  (c) every such line appears once, also on 2 ranks (rank 0 prints),
+  (c) every such line appears once, also on 2 ranks: rank 0 prints, and no other rank prints
+      anything (mpiexec --tag-output says which rank wrote each line; lines of a second rank
+      once landed inside rank 0's listing and cut one of its lines in two),
   (d) the run took no step and wrote nothing: neither -output_dir nor any scratch directory
       (TMPDIR is the case's own directory, which must be left empty) exists afterwards,
   (e) it ends within a few seconds (no hang).
@@ -110,7 +112,7 @@ def main():
     results = os.path.join(out, "results")
     cmd = [EXE, "-options_file", case["scene"], "-output_dir", results, "-help"] + case["args"]
     if case["ranks"] > 1:
-        cmd = ["mpiexec", "-n", str(case["ranks"])] + cmd
+        cmd = ["mpiexec", "--tag-output", "-n", str(case["ranks"])] + cmd
     env = dict(os.environ, TMPDIR=scratch)
     env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
     env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
@@ -129,6 +131,12 @@ def main():
     with open(os.path.join(out, "log.txt"), "w") as f:
         f.write(text)
     lines = text.splitlines()
+    if case["ranks"] > 1:  # "[job,rank]<stdout>:text"; mpiexec's own lines are untagged
+        tagged = [(re.match(r"^\[\d+,(\d+)\]<(?:stdout|stderr)>:(.*)$", l), l) for l in lines]
+        others = [l for m, l in tagged if m and m.group(1) != "0"]
+        if others:
+            failures.append(f"{len(others)} lines from ranks other than 0, e.g. '{others[0]}'")
+        lines = [m.group(2) if m else l for m, l in tagged]
     expected_rc = 1 if "error" in case else 0
     if rc != expected_rc:
         failures.append(f"exit status {rc}, expected {expected_rc}")
