@@ -341,15 +341,18 @@ def case_partially_drained(args, quarter):
     if quarter and common.SOLVER == "fieldsplit":
         # Guard of the iterative preset (iteration counts are deterministic for a given mesh and
         # number of ranks): outer Krylov iterations per Newton iteration recorded on this mesh
-        # (factor 2, 2 ranks) with the inexact Newton forcing (newton_forcing.hpp) and one
-        # BoomerAMG (HMIS) on both pressures: worst step 15, mean 8.43. Bounds 10 % above.
-        # Earlier presets: 15-36 (bs = 1 GAMG, 15 inner iterations), then worst 21.6, mean 15.9
-        # (vertex_blocks, pressures split by split), then 19 and 11.84 (every solve to 1e-8).
+        # (factor 2, 2 ranks) with one GAMG V-cycle on the displacement per outer iteration,
+        # every Newton solve at most 0.01 and the target known from a step's first solve
+        # (newton_forcing.hpp): worst step 33.83 (a one-Newton step, solved to 0.01 of its
+        # target), mean 21.82 (60 Newton and 1309 outer iterations in 15 steps). Bounds 10 %
+        # above. Earlier presets: 15-36 (bs = 1 GAMG, 15 inner iterations), then worst 21.6,
+        # mean 15.9 (vertex_blocks, pressures split by split), then 19 and 11.84 (every solve
+        # to 1e-8), then 15 and 8.43 (inner GMRES of 8 GAMG iterations, forcing up to 0.1).
         per_newton = np.asarray(ts["ksp_its"][1:], float) / np.asarray(ts["newton_its"][1:], float)
         chk.check("fieldsplit: max over steps of Krylov iterations per Newton iteration",
-                  float(per_newton.max()), 16.5)
+                  float(per_newton.max()), 37.2)
         chk.check("fieldsplit: Krylov iterations per Newton iteration over the run",
-                  float(np.sum(ts["ksp_its"][1:]) / np.sum(ts["newton_its"][1:])), 9.3)
+                  float(np.sum(ts["ksp_its"][1:]) / np.sum(ts["newton_its"][1:])), 24.0)
     equilibrium(chk, run, "partially drained")
     dpw = -(col(ts, "caisson.lid.p3_force") - ts["caisson.lid.p3_force"][0])
     scope = "quarter" if quarter else "full circle"

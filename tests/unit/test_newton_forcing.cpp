@@ -27,12 +27,12 @@ TEST(NewtonForcing, NonlinearityDominates)
   EXPECT_DOUBLE_EQ(linearTolerance(1e-8, 0.0, 2.5e-5), 2.5e-6);
 }
 
-// Never looser than 0.1 (a residual that grew, or a target already met), never tighter than
+// Never looser than 0.01 (a residual that grew, or a target already met), never tighter than
 // the floor.
 TEST(NewtonForcing, Bounds)
 {
-  EXPECT_DOUBLE_EQ(linearTolerance(1e-8, 0.0, 2.0), 0.1);
-  EXPECT_DOUBLE_EQ(linearTolerance(1e-8, 50.0, 0.0), 0.1);
+  EXPECT_DOUBLE_EQ(linearTolerance(1e-8, 0.0, 2.0), 0.01);
+  EXPECT_DOUBLE_EQ(linearTolerance(1e-8, 50.0, 0.0), 0.01);
   EXPECT_DOUBLE_EQ(linearTolerance(1e-3, 1e-9, 1e-9), 1e-3);
   EXPECT_DOUBLE_EQ(linearTolerance(1e-8, -1.0, -1.0), 1e-8);
 }
