@@ -29,6 +29,7 @@ struct VertexBlockMap {
   /// iterations per displacement solve instead of 26.
   KSP outer = nullptr;
   Vec jacobian_diagonal = nullptr; ///< diag of the whole Jacobian, filled at each assembly
+  Vec coordinates = nullptr;       ///< vertex coordinates in the extended numbering (dumps)
   IS displacement = nullptr;       ///< the displacement split in the whole system
 };
 
@@ -40,6 +41,7 @@ PetscErrorCode destroyMap(void *ctx)
     PetscCall(VecDestroy(&v));
   PetscCall(VecDestroy(&map->ext_of_free_global));
   PetscCall(VecDestroy(&map->jacobian_diagonal));
+  PetscCall(VecDestroy(&map->coordinates));
   PetscCall(ISDestroy(&map->displacement));
   delete map;
   PetscFunctionReturn(0);
@@ -89,6 +91,7 @@ struct VertexBlocksPC {
   Vec ext_rhs = nullptr, ext_sol = nullptr;
   std::vector<PetscInt> off_rows; ///< off-rank columns of the block (sorted) ...
   std::vector<PetscInt> off_ext;  ///< ... and their extended rows
+  PetscInt setups = 0;            ///< set-ups so far (which one -..._dump_operator writes)
 };
 
 PetscErrorCode findMap(Mat P, const VertexBlockMap **map)
@@ -284,6 +287,60 @@ PetscErrorCode attachModes(VertexBlocksPC &vb)
   PetscFunctionReturn(0);
 }
 
+/// -<prefix>vertex_blocks_dump_operator FILE (and _dump_operator_setup N, default 1): writes
+/// the N-th set-up's operator to FILE in PETSc's binary format, for studying the displacement
+/// block alone (bench/displacement_block.c): the extended matrix, its near-null-space vectors,
+/// the unscaled Jacobian diagonal of each row (0 on constrained components) and the vertex
+/// coordinates (dim per vertex), in that order.
+PetscErrorCode dumpOperator(PC pc, const VertexBlocksPC &vb)
+{
+  const VertexBlockMap &map = *vb.map;
+  char file[PETSC_MAX_PATH_LEN] = "";
+  PetscBool set = PETSC_FALSE;
+  PetscInt which = 1;
+  const char *prefix;
+  PetscFunctionBeginUser;
+  PetscCall(PCGetOptionsPrefix(pc, &prefix));
+  PetscCall(PetscOptionsGetString(nullptr, prefix, "-vertex_blocks_dump_operator", file,
+                                  sizeof file, &set));
+  PetscCall(
+      PetscOptionsGetInt(nullptr, prefix, "-vertex_blocks_dump_operator_setup", &which, nullptr));
+  if (!set || vb.setups != which) PetscFunctionReturn(0);
+  PetscViewer viewer;
+  MatNullSpace space;
+  PetscInt n;
+  const Vec *modes;
+  Vec diag, weight;
+  PetscCall(
+      PetscViewerBinaryOpen(PetscObjectComm((PetscObject)pc), file, FILE_MODE_WRITE, &viewer));
+  PetscCall(MatView(vb.ext, viewer));
+  PetscCall(MatGetNearNullSpace(vb.ext, &space));
+  PetscCall(MatNullSpaceGetVecs(space, nullptr, &n, &modes));
+  for (PetscInt m = 0; m < n; ++m)
+    PetscCall(VecView(modes[m], viewer));
+  PetscCall(VecDuplicate(vb.ext_rhs, &weight));
+  PetscCall(VecSet(weight, 0.0));
+  PetscCall(VecGetSubVector(map.jacobian_diagonal, map.displacement, &diag));
+  const PetscScalar *d;
+  PetscScalar *w;
+  PetscCall(VecGetArrayRead(diag, &d));
+  PetscCall(VecGetArray(weight, &w));
+  for (size_t i = 0; i < map.ext_of_free.size(); ++i)
+    w[map.ext_of_free[i] - map.ext_start] = d[i];
+  PetscCall(VecRestoreArray(weight, &w));
+  PetscCall(VecRestoreArrayRead(diag, &d));
+  PetscCall(VecRestoreSubVector(map.jacobian_diagonal, map.displacement, &diag));
+  PetscCall(VecView(weight, viewer));
+  PetscCall(VecDestroy(&weight));
+  PetscCall(VecView(map.coordinates, viewer));
+  PetscCall(PetscViewerDestroy(&viewer));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)pc),
+                        "poroseam: displacement block of set-up %" PetscInt_FMT " (%" PetscInt_FMT
+                        " near-null vectors) written to %s\n",
+                        which, n, file));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode setUp(PC pc)
 {
   auto *vb = static_cast<VertexBlocksPC *>(pc->data);
@@ -303,6 +360,8 @@ PetscErrorCode setUp(PC pc)
     PetscCall(PCSetFromOptions(vb->inner));
   }
   PetscCall(PCSetOperators(vb->inner, vb->ext, vb->ext));
+  ++vb->setups;
+  PetscCall(dumpOperator(pc, *vb));
   PetscCall(PCSetUp(vb->inner));
   PetscFunctionReturn(0);
 }
@@ -468,7 +527,7 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
     PetscCheck(e >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "vertex_blocks: a displacement dof that belongs to no owned vertex");
   PetscCall(extendedModes(dim, axisymmetric, ext_coords, map->ext_modes));
-  PetscCall(VecDestroy(&ext_coords));
+  map->coordinates = ext_coords;
   // The same map as a vector of the displacement block, to look up off-rank columns.
   PetscCall(VecCreateMPI(comm, nfree, PETSC_DETERMINE, &map->ext_of_free_global));
   PetscScalar *e;
