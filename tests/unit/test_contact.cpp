@@ -18,6 +18,59 @@ ContactResponse at(const ContactHistory &h, int nt, double gn, double gt0, doubl
   const double gt[2] = {gt0, gt1};
   return contactResponse(kParams, kInitial, h, nt, gn, gt);
 }
+
+struct SweepCounts {
+  int changes = 0;         ///< branch changes seen on the grids
+  int low_bit_changes = 0; ///< ... of which only bit 0 of the branch number flipped
+};
+
+/// contactStateChanges against the sampled branch: 200 random steps g + s dg in 2D and 200 in
+/// 3D from the history h (a fixed pseudo-random sequence from seed); on a grid of 4000 points
+/// in s every change of branch(response) lies at a reported s, and at each reported s the
+/// branch changes. branch maps a response to an integer (its state, or more).
+template <class Branch>
+SweepCounts checkStateChangesAgainstSampling(const ContactParameters &p, const ContactHistory &h,
+                                             unsigned seed, Branch branch)
+{
+  auto uniform = [&seed](double a, double b) {
+    seed = seed * 1103515245u + 12345u;
+    return a + (b - a) * ((seed >> 8) & 0xffff) / 65535.0;
+  };
+  SweepCounts counts;
+  for (int nt = 1; nt <= 2; ++nt)
+    for (int trial = 0; trial < 200; ++trial) {
+      const double gn = uniform(-2e-5, 2e-5), dgn = uniform(-4e-5, 4e-5);
+      const double gt[2] = {uniform(-1e-4, 1e-4), nt == 2 ? uniform(-1e-4, 1e-4) : 0.0};
+      const double dgt[2] = {uniform(-2e-4, 2e-4), nt == 2 ? uniform(-2e-4, 2e-4) : 0.0};
+      std::vector<double> kinks;
+      contactStateChanges(p, kInitial, h, nt, gn, gt, dgn, dgt, kinks);
+      auto along = [&](double s) {
+        const double g[2] = {gt[0] + s * dgt[0], gt[1] + s * dgt[1]};
+        return branch(contactResponse(p, kInitial, h, nt, gn + s * dgn, g));
+      };
+      const int n = 4000;
+      for (int i = 0; i < n; ++i) {
+        const double a = double(i) / n, b = double(i + 1) / n;
+        bool reported = false;
+        for (double s : kinks)
+          reported = reported || (s > a - 1e-9 && s <= b + 1e-9);
+        const int ba = along(a), bb = along(b);
+        if (ba != bb) {
+          ++counts.changes;
+          if ((ba ^ bb) == 1) ++counts.low_bit_changes;
+          EXPECT_TRUE(reported) << "nt " << nt << " trial " << trial << ": change in [" << a << ", "
+                                << b << "] not reported";
+        }
+      }
+      for (double s : kinks) {
+        EXPECT_GT(s, 0.0);
+        EXPECT_LE(s, 1.0);
+        const double lo = std::max(0.0, s - 1e-6), hi = std::min(1.0, s + 1e-6);
+        EXPECT_NE(along(lo), along(hi)) << "nt " << nt << " trial " << trial << ": s = " << s;
+      }
+    }
+  return counts;
+}
 } // namespace
 
 TEST(Contact, NormalPenaltyFromInitialState)
@@ -136,43 +189,9 @@ TEST(Contact, StateChangesAlongAStepAreTheKinks)
   ContactHistory h;
   h.gap_tangential[0] = 2e-6, h.gap_tangential[1] = -1e-6;
   h.shear[0] = 3e4, h.shear[1] = -2e4; // |tau_n| = 3.6e4 < mu p'_N0 = 5.7e4
-  unsigned seed = 12345;
-  auto uniform = [&seed](double a, double b) {
-    seed = seed * 1103515245u + 12345u;
-    return a + (b - a) * ((seed >> 8) & 0xffff) / 65535.0;
-  };
-  int changes_seen = 0;
-  for (int nt = 1; nt <= 2; ++nt)
-    for (int trial = 0; trial < 200; ++trial) {
-      const double gn = uniform(-2e-5, 2e-5), dgn = uniform(-4e-5, 4e-5);
-      const double gt[2] = {uniform(-1e-4, 1e-4), nt == 2 ? uniform(-1e-4, 1e-4) : 0.0};
-      const double dgt[2] = {uniform(-2e-4, 2e-4), nt == 2 ? uniform(-2e-4, 2e-4) : 0.0};
-      std::vector<double> kinks;
-      contactStateChanges(kParams, kInitial, h, nt, gn, gt, dgn, dgt, kinks);
-      auto state = [&](double s) {
-        const double g[2] = {gt[0] + s * dgt[0], gt[1] + s * dgt[1]};
-        return contactResponse(kParams, kInitial, h, nt, gn + s * dgn, g).state;
-      };
-      const int n = 4000;
-      for (int i = 0; i < n; ++i) {
-        const double a = double(i) / n, b = double(i + 1) / n;
-        bool reported = false;
-        for (double s : kinks)
-          reported = reported || (s > a - 1e-9 && s <= b + 1e-9);
-        if (state(a) != state(b)) {
-          ++changes_seen;
-          EXPECT_TRUE(reported) << "nt " << nt << " trial " << trial << ": change in [" << a
-                                << ", " << b << "] not reported";
-        }
-      }
-      for (double s : kinks) {
-        EXPECT_GT(s, 0.0);
-        EXPECT_LE(s, 1.0);
-        const double lo = std::max(0.0, s - 1e-6), hi = std::min(1.0, s + 1e-6);
-        EXPECT_NE(state(lo), state(hi)) << "nt " << nt << " trial " << trial << ": s = " << s;
-      }
-    }
-  EXPECT_GT(changes_seen, 100);
+  const SweepCounts counts = checkStateChangesAgainstSampling(
+      kParams, h, 12345u, [](const ContactResponse &r) { return (int)r.state; });
+  EXPECT_GT(counts.changes, 100);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -371,45 +390,11 @@ TEST(ContactDilation, StateChangesIncludeTheDilationLimit)
   h.gap_tangential[0] = 2e-6, h.gap_tangential[1] = -1e-6;
   h.shear[0] = 3e4, h.shear[1] = -2e4;
   h.slip_plastic = 2e-5; // d = 3.5 um, 2e-5 m of slip left to dilate
-  unsigned seed = 4321;
-  auto uniform = [&seed](double a, double b) {
-    seed = seed * 1103515245u + 12345u;
-    return a + (b - a) * ((seed >> 8) & 0xffff) / 65535.0;
-  };
-  int changes_seen = 0, limit_changes = 0;
-  for (int nt = 1; nt <= 2; ++nt)
-    for (int trial = 0; trial < 200; ++trial) {
-      const double gn = uniform(-2e-5, 2e-5), dgn = uniform(-4e-5, 4e-5);
-      const double gt[2] = {uniform(-1e-4, 1e-4), nt == 2 ? uniform(-1e-4, 1e-4) : 0.0};
-      const double dgt[2] = {uniform(-2e-4, 2e-4), nt == 2 ? uniform(-2e-4, 2e-4) : 0.0};
-      std::vector<double> kinks;
-      contactStateChanges(p, kInitial, h, nt, gn, gt, dgn, dgt, kinks);
-      auto branch = [&](double s) {
-        const double g[2] = {gt[0] + s * dgt[0], gt[1] + s * dgt[1]};
-        const auto r = contactResponse(p, kInitial, h, nt, gn + s * dgn, g);
+  // branch: the state, and in bit 0 whether the sliding is past the limit
+  const SweepCounts counts =
+      checkStateChangesAgainstSampling(p, h, 4321u, [slip_limit](const ContactResponse &r) {
         return 2 * (int)r.state + (r.updated.slip_plastic > slip_limit ? 1 : 0);
-      };
-      const int n = 4000;
-      for (int i = 0; i < n; ++i) {
-        const double a = double(i) / n, b = double(i + 1) / n;
-        bool reported = false;
-        for (double s : kinks)
-          reported = reported || (s > a - 1e-9 && s <= b + 1e-9);
-        const int ba = branch(a), bb = branch(b);
-        if (ba != bb) {
-          ++changes_seen;
-          if ((ba ^ bb) == 1) ++limit_changes;
-          EXPECT_TRUE(reported) << "nt " << nt << " trial " << trial << ": change in [" << a << ", "
-                                << b << "] not reported";
-        }
-      }
-      for (double s : kinks) {
-        EXPECT_GT(s, 0.0);
-        EXPECT_LE(s, 1.0);
-        const double lo = std::max(0.0, s - 1e-6), hi = std::min(1.0, s + 1e-6);
-        EXPECT_NE(branch(lo), branch(hi)) << "nt " << nt << " trial " << trial << ": s = " << s;
-      }
-    }
-  EXPECT_GT(changes_seen, 100);
-  EXPECT_GT(limit_changes, 20);
+      });
+  EXPECT_GT(counts.changes, 100);
+  EXPECT_GT(counts.low_bit_changes, 20);
 }
