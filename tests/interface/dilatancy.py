@@ -194,18 +194,7 @@ def restart(args):
     same_rows = len(a["step"]) == len(b["step"]) and np.array_equal(a["step"], b["step"])
     chk.check(f"time series rows: {len(b['step'])} (uninterrupted {len(a['step'])})", 0.0 if same_rows else 1.0, 0.0)
     if same_rows:
-        def kind(c):
-            q = c.rsplit(".", 1)[-1]
-            return re.sub(r"^(F|u)[xyz]$", r"\1", q)
-        names = [n for n in a if n not in ("wall_time",)]
-        scales = {}
-        for n in names:
-            scales[kind(n)] = max(scales.get(kind(n), 0.0), np.max(np.abs(a[n])))
-        worst, where = 0.0, "none"
-        for n in names:
-            err = np.max(np.abs(a[n] - b[n])) / max(scales[kind(n)], 1e-300)
-            if err > worst:
-                worst, where = err, n
+        worst, where = common.largest_series_difference(a, b)
         chk.check(f"largest difference relative to its kind's scale ({where})", worst, 1e-12)
         later = a["time"] > 15
         chk.check("the normal stress still grows after the restart (slip past t = 15 s dilates)",

@@ -159,14 +159,6 @@ def restart(out, extra, ranks):
     return res.returncode, res.stdout + res.stderr
 
 
-def kind(column):
-    """forces, flows, ... : the columns whose magnitudes a column is judged against."""
-    if column in ("step", "time", "dt", "load", "newton_its", "ksp_its", "rejected"):
-        return column
-    q = column.rsplit(".", 1)[-1]
-    return re.sub(r"^(F|u)[xyz]$", r"\1", q)
-
-
 def read_series(out):
     """timeseries.csv as {column: values} (column names as written, dots kept)."""
     path = os.path.join(out, "timeseries.csv")
@@ -184,16 +176,8 @@ def compare(reference, other, chk):
            f"(steps 0..{STEPS}, each once)")
     if a.keys() != b.keys() or len(a["step"]) != len(b["step"]):
         return
-    names = [n for n in a if n != "wall_time"]
-    scales = {}
-    for n in names:
-        scales[kind(n)] = max(scales.get(kind(n), 0.0), np.max(np.abs(a[n])))
-    worst, where = 0.0, ""
-    for n in names:
-        err = np.max(np.abs(a[n] - b[n])) / max(scales[kind(n)], 1e-300)
-        if err > worst:
-            worst, where = err, n
-    chk.check(f"time series: largest difference relative to its kind's scale ({where or 'none'})",
+    worst, where = common.largest_series_difference(a, b)
+    chk.check(f"time series: largest difference relative to its kind's scale ({where})",
               worst, RTOL)
     for name in ("fields", "interfaces"):
         fa, fb = h5py.File(os.path.join(reference, name + ".h5")), h5py.File(os.path.join(other, name + ".h5"))

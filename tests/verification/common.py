@@ -12,6 +12,7 @@ from the source tree):
 """
 
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -114,6 +115,28 @@ def read_timeseries(out_dir):
         keep = cols["step"] > 0
         cols = {k: v[keep] for k, v in cols.items()}
     return cols
+
+
+def series_kind(column):
+    """The quantity a time-series column is judged against: its last name part with the
+    component dropped (Fx, Fy, Fz -> F; ux, uy, uz -> u), so all forces share one scale."""
+    return re.sub(r"^(F|u)[xyz]$", r"\1", column.rsplit(".", 1)[-1])
+
+
+def largest_series_difference(a, b, skip=("wall_time",)):
+    """Largest difference between two time series ({column: values}, the same rows) over
+    their columns, each relative to the largest magnitude of its kind (series_kind) in a.
+    Returns (difference, column), column "none" when every difference is zero."""
+    names = [n for n in a if n not in skip]
+    scales = {}
+    for n in names:
+        scales[series_kind(n)] = max(scales.get(series_kind(n), 0.0), np.max(np.abs(a[n])))
+    worst, where = 0.0, "none"
+    for n in names:
+        err = np.max(np.abs(a[n] - b[n])) / max(scales[series_kind(n)], 1e-300)
+        if err > worst:
+            worst, where = err, n
+    return worst, where
 
 
 def column(ts, name):
