@@ -237,6 +237,28 @@ PetscErrorCode fillExtended(Mat P, VertexBlocksPC &vb)
   PetscFunctionReturn(0);
 }
 
+/// The Jacobian's diagonal of the displacement block in the extended numbering (created like
+/// vb.ext_rhs): the free components' entries, 0 on constrained ones.
+PetscErrorCode extendedJacobianDiagonal(const VertexBlocksPC &vb, Vec *out)
+{
+  const VertexBlockMap &map = *vb.map;
+  Vec diag;
+  const PetscScalar *d;
+  PetscScalar *e;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(vb.ext_rhs, out));
+  PetscCall(VecSet(*out, 0.0));
+  PetscCall(VecGetSubVector(map.jacobian_diagonal, map.displacement, &diag));
+  PetscCall(VecGetArrayRead(diag, &d));
+  PetscCall(VecGetArray(*out, &e));
+  for (size_t i = 0; i < map.ext_of_free.size(); ++i)
+    e[map.ext_of_free[i] - map.ext_start] = d[i];
+  PetscCall(VecRestoreArray(*out, &e));
+  PetscCall(VecRestoreArrayRead(diag, &d));
+  PetscCall(VecRestoreSubVector(map.jacobian_diagonal, map.displacement, &diag));
+  PetscFunctionReturn(0);
+}
+
 /// The near null space of the operator the PC is given: the rigid-body modes, times D^1/2
 /// when the outer solver scales the system by D^-1/2 (constrained rows: the vertex's largest).
 PetscErrorCode attachModes(VertexBlocksPC &vb)
@@ -251,17 +273,11 @@ PetscErrorCode attachModes(VertexBlocksPC &vb)
     PetscCall(VecCopy(map.ext_modes[m], modes[m]));
   }
   if (scaled) {
-    Vec weight, diag;
-    PetscCall(VecDuplicate(vb.ext_rhs, &weight));
-    PetscCall(VecSet(weight, 0.0));
-    PetscCall(VecGetSubVector(map.jacobian_diagonal, map.displacement, &diag));
-    const PetscInt ext_start = map.ext_start;
-    const PetscScalar *d;
+    Vec weight; // sqrt|diag|, constrained components: the vertex's largest
     PetscScalar *w;
-    PetscCall(VecGetArrayRead(diag, &d));
+    PetscCall(extendedJacobianDiagonal(vb, &weight));
+    PetscCall(VecSqrtAbs(weight));
     PetscCall(VecGetArray(weight, &w));
-    for (size_t i = 0; i < map.ext_of_free.size(); ++i)
-      w[map.ext_of_free[i] - ext_start] = PetscSqrtReal(PetscAbsScalar(d[i]));
     for (PetscInt v = 0; v < map.ext_local / map.dim; ++v) {
       PetscReal largest = 0.0;
       for (int c = 0; c < map.dim; ++c)
@@ -270,8 +286,6 @@ PetscErrorCode attachModes(VertexBlocksPC &vb)
         if (w[v * map.dim + c] == 0.0) w[v * map.dim + c] = largest > 0.0 ? largest : 1.0;
     }
     PetscCall(VecRestoreArray(weight, &w));
-    PetscCall(VecRestoreArrayRead(diag, &d));
-    PetscCall(VecRestoreSubVector(map.jacobian_diagonal, map.displacement, &diag));
     for (auto &v : modes)
       PetscCall(VecPointwiseMult(v, v, weight));
     PetscCall(VecDestroy(&weight));
@@ -310,7 +324,7 @@ PetscErrorCode dumpOperator(PC pc, const VertexBlocksPC &vb)
   MatNullSpace space;
   PetscInt n;
   const Vec *modes;
-  Vec diag, weight;
+  Vec diagonal;
   PetscCall(
       PetscViewerBinaryOpen(PetscObjectComm((PetscObject)pc), file, FILE_MODE_WRITE, &viewer));
   PetscCall(MatView(vb.ext, viewer));
@@ -318,20 +332,9 @@ PetscErrorCode dumpOperator(PC pc, const VertexBlocksPC &vb)
   PetscCall(MatNullSpaceGetVecs(space, nullptr, &n, &modes));
   for (PetscInt m = 0; m < n; ++m)
     PetscCall(VecView(modes[m], viewer));
-  PetscCall(VecDuplicate(vb.ext_rhs, &weight));
-  PetscCall(VecSet(weight, 0.0));
-  PetscCall(VecGetSubVector(map.jacobian_diagonal, map.displacement, &diag));
-  const PetscScalar *d;
-  PetscScalar *w;
-  PetscCall(VecGetArrayRead(diag, &d));
-  PetscCall(VecGetArray(weight, &w));
-  for (size_t i = 0; i < map.ext_of_free.size(); ++i)
-    w[map.ext_of_free[i] - map.ext_start] = d[i];
-  PetscCall(VecRestoreArray(weight, &w));
-  PetscCall(VecRestoreArrayRead(diag, &d));
-  PetscCall(VecRestoreSubVector(map.jacobian_diagonal, map.displacement, &diag));
-  PetscCall(VecView(weight, viewer));
-  PetscCall(VecDestroy(&weight));
+  PetscCall(extendedJacobianDiagonal(vb, &diagonal));
+  PetscCall(VecView(diagonal, viewer));
+  PetscCall(VecDestroy(&diagonal));
   PetscCall(VecView(map.coordinates, viewer));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(PetscPrintf(PetscObjectComm((PetscObject)pc),
