@@ -1,9 +1,11 @@
 #include "poroseam/vertex_blocks.hpp"
 
+#include "poroseam/collective_check.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/nullspace.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <petsc/private/pcimpl.h> // a new PC type sets pc->ops (PETSc's documented way)
 #include <petscdmplex.h>
 #include <string>
@@ -319,14 +321,33 @@ PetscErrorCode dumpOperator(PC pc, const VertexBlocksPC &vb)
                                   sizeof file, &set));
   PetscCall(
       PetscOptionsGetInt(nullptr, prefix, "-vertex_blocks_dump_operator_setup", &which, nullptr));
+  MPI_Comm comm = PetscObjectComm((PetscObject)pc);
+  if (set && vb.setups == 1) {
+    // Checked on every rank together at the first set-up: a file only rank 0 cannot open
+    // would fail there alone and leave the other ranks waiting.
+    std::string error;
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(comm, &rank));
+    if (which < 1)
+      error = "option -" + std::string(prefix ? prefix : "") +
+              "vertex_blocks_dump_operator_setup " + std::to_string(which) +
+              ": expected a set-up number >= 1";
+    else if (rank == 0) {
+      if (std::FILE *f = std::fopen(file, "wb"))
+        std::fclose(f);
+      else
+        error = "option -" + std::string(prefix ? prefix : "") + "vertex_blocks_dump_operator " +
+                file + ": cannot write that file";
+    }
+    PetscCall(checkOnAllRanks(comm, error));
+  }
   if (!set || vb.setups != which) PetscFunctionReturn(0);
   PetscViewer viewer;
   MatNullSpace space;
   PetscInt n;
   const Vec *modes;
   Vec diagonal;
-  PetscCall(
-      PetscViewerBinaryOpen(PetscObjectComm((PetscObject)pc), file, FILE_MODE_WRITE, &viewer));
+  PetscCall(PetscViewerBinaryOpen(comm, file, FILE_MODE_WRITE, &viewer));
   PetscCall(MatView(vb.ext, viewer));
   PetscCall(MatGetNearNullSpace(vb.ext, &space));
   PetscCall(MatNullSpaceGetVecs(space, nullptr, &n, &modes));
