@@ -9,8 +9,9 @@ namespace poroseam {
 namespace {
 
 /// Options of the whole scene and of the run, read by poroseam outside the families below
-/// (docs/scenes.md, docs/checkpoints.md). -snes_reference_rtol and -snes_kink_linesearch are
-/// poroseam's too but live in PETSc's namespace, where a near miss may be PETSc's own.
+/// (docs/scenes.md, docs/checkpoints.md; -mass_balance_krylov_test: mass_balance_test.hpp).
+/// -snes_reference_rtol and -snes_kink_linesearch are poroseam's too but live in PETSc's namespace,
+/// where a near miss may be PETSc's own.
 const char *const kSceneNames[] = {"mesh",
                                    "mesh_size_factor",
                                    "mesh_max_elements",
@@ -33,6 +34,7 @@ const char *const kSceneNames[] = {"mesh",
                                    "partitioner_report",
                                    "solver_preset",
                                    "solver_auto_threshold",
+                                   "mass_balance_krylov_test",
                                    "checkpoint_every",
                                    "restart",
                                    "restart_step",

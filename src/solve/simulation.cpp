@@ -9,6 +9,7 @@
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/log_events.hpp"
+#include "poroseam/mass_balance_test.hpp"
 #include "poroseam/mesh.hpp"
 #include "poroseam/nullspace.hpp"
 #include "poroseam/option_check.hpp"
@@ -424,6 +425,11 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
+  {
+    KSP ksp;
+    PetscCall(SNESGetKSP(snes, &ksp));
+    PetscCall(configureMassBalanceTest(ksp, run.dm)); // after the KSP's type and scaling are set
+  }
   PetscCall(configureLineSearch(run, snes)); // contact kinks (newton_control.cpp)
   {
     KSP ksp;
