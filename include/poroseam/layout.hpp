@@ -37,4 +37,8 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene);
 /// After distribution: builds the local section (fields and constraints) and sets it on dm.
 PetscErrorCode createSolutionSection(DM dm, const Scene &scene);
 
+/// The rows of the water unknowns, bulk and interface pressure together (global indices,
+/// sorted), from the field index sets of DMCreateFieldIS; null when the scene has none.
+PetscErrorCode pressureRows(PetscInt num_fields, const IS fields[], IS *rows);
+
 } // namespace poroseam

@@ -34,15 +34,6 @@
 
 namespace poroseam {
 
-/// Whether the weighted mass-balance residual meets the solve's tolerance: ||D r_p|| <=
-/// max(rtol ||D b||, atol).
-inline bool massBalanceConverged(double weighted_mass_residual, double weighted_rhs, double rtol,
-                                 double atol)
-{
-  const double bound = rtol * weighted_rhs > atol ? rtol * weighted_rhs : atol;
-  return weighted_mass_residual <= bound;
-}
-
 /// Installs the test on `ksp` (the Newton solver's KSP, after its options are read) when the
 /// scene has pressure unknowns, the KSP iterates, no -ksp_diagonal_scale is set and
 /// -mass_balance_krylov_test is on (default). Collective.

@@ -110,8 +110,8 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
     std::vector<PetscInt> edges;
     PetscCall(lateralEdgesOnBoundary(dm, bc.boundary, edges));
     long mine = (long)edges.size(), total = 0;
-    PetscCallMPI(MPI_Allreduce(&mine, &total, 1, MPI_LONG, MPI_SUM,
-                               PetscObjectComm((PetscObject)dm)));
+    PetscCallMPI(
+        MPI_Allreduce(&mine, &total, 1, MPI_LONG, MPI_SUM, PetscObjectComm((PetscObject)dm)));
     PetscCheck(total > 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT,
                "%s: no interface with flow (-interface_<i>_flow) meets boundary '%s', so there "
                "is no interface pressure there to prescribe; name a boundary that an "
@@ -244,6 +244,22 @@ PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
   }
   PetscCall(DMSetLocalSection(dm, s));
   PetscCall(PetscSectionDestroy(&s));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode pressureRows(PetscInt num_fields, const IS fields[], IS *rows)
+{
+  PetscFunctionBeginUser;
+  *rows = nullptr;
+  if (num_fields <= kPressureField) PetscFunctionReturn(0);
+  PetscCall(ISDuplicate(fields[kPressureField], rows));
+  for (PetscInt f = kPressureField + 1; f < num_fields; ++f) {
+    IS merged;
+    PetscCall(ISExpand(*rows, fields[f], &merged));
+    PetscCall(ISDestroy(rows));
+    *rows = merged;
+  }
+  PetscCall(ISSort(*rows));
   PetscFunctionReturn(0);
 }
 

@@ -65,7 +65,7 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement
   PetscCall(VecRestoreArrayRead(coords, &x));
   PetscCall(DMRestoreGlobalVector(dm, &global));
   PetscCall(DMRestoreLocalVector(dm, &local));
-    PetscCall(orthonormalize(modes));
+  PetscCall(orthonormalize(modes));
   PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)dm), PETSC_FALSE, count, modes.data(),
                                space));
   for (auto &v : modes)
@@ -168,17 +168,8 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobi
   // Two splits, as a Schur complement needs: "displacement", and "pressures" holding the bulk
   // and the interface pressures together; inside it, "pressure" and "interface_pressure"
   // (nameInnerSplits).
-  IS pressures = nullptr;
-  if (numFields > kPressureField) {
-    PetscCall(ISDuplicate(fields[kPressureField], &pressures));
-    for (PetscInt f = kPressureField + 1; f < numFields; ++f) {
-      IS merged;
-      PetscCall(ISExpand(pressures, fields[f], &merged));
-      PetscCall(ISDestroy(&pressures));
-      pressures = merged;
-    }
-    PetscCall(ISSort(pressures));
-  }
+  IS pressures;
+  PetscCall(pressureRows(numFields, fields, &pressures));
   PetscCall(PCFieldSplitSetIS(pc, "displacement", fields[kDisplacementField]));
   if (pressures) {
     PetscInt size;

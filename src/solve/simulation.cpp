@@ -425,16 +425,12 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
-  {
-    KSP ksp;
-    PetscCall(SNESGetKSP(snes, &ksp));
-    PetscCall(configureMassBalanceTest(ksp, run.dm)); // after the KSP's type and scaling are set
-  }
   PetscCall(configureLineSearch(run, snes)); // contact kinks (newton_control.cpp)
   {
     KSP ksp;
     PetscReal rtol;
     PetscCall(SNESGetKSP(snes, &ksp));
+    PetscCall(configureMassBalanceTest(ksp, run.dm)); // after the KSP's type and scaling are set
     PetscCall(KSPGetTolerances(ksp, &rtol, nullptr, nullptr, nullptr));
     run.ksp_rtol = rtol;
   }
