@@ -259,6 +259,13 @@ CASES = {
                                   "-fieldsplit_displacement_vertex_blocks_dump_operator_setup", "0"],
                             expect=["-fieldsplit_displacement_vertex_blocks_dump_operator_setup 0",
                                     "expected a set-up number >= 1"]),
+    # the Krylov test's switch (mass_balance_test.hpp): a value that is no boolean, a misspelling
+    "mass_balance_test_maybe": dict(args=["-mass_balance_krylov_test", "maybe"],
+                                    expect=["-mass_balance_krylov_test", "maybe",
+                                            "expected true or false"]),
+    "misspelt_mass_balance_test": dict(args=["-mass_balance_krylov_tset", "0"],
+                                       expect=["-mass_balance_krylov_tset",
+                                               "did you mean -mass_balance_krylov_test?"]),
     "misspelt_scene_name": dict(args=["-gravty", "9.81"],
                                 expect=["-gravty", "did you mean -gravity?"]),
     "ramp_without_value": dict(args=["-bc_top_flux_ramp", "3"],
