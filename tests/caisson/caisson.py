@@ -346,9 +346,10 @@ def case_partially_drained(args, quarter):
         # (newton_forcing.hpp) and Chebyshev on [0.05, 1.05] of the largest eigenvalue: worst
         # step 32.17 (a one-Newton step, solved to 0.01 of its target), mean 20.73 (60 Newton
         # and 1244 outer iterations in 15 steps). Bounds 10 % above. Before the Chebyshev
-        # interval (until 2026-11-24): 33.83 and 21.82. Earlier presets: 15-36 (bs = 1 GAMG, 15 inner iterations), then worst 21.6,
-        # mean 15.9 (vertex_blocks, pressures split by split), then 19 and 11.84 (every solve
-        # to 1e-8), then 15 and 8.43 (inner GMRES of 8 GAMG iterations, forcing up to 0.1).
+        # interval (until 2026-11-24): 33.83 and 21.82. Earlier presets: 15-36 (bs = 1 GAMG,
+        # 15 inner iterations), then worst 21.6, mean 15.9 (vertex_blocks, pressures split by
+        # split), then 19 and 11.84 (every solve to 1e-8), then 15 and 8.43 (inner GMRES of 8
+        # GAMG iterations, forcing up to 0.1).
         per_newton = np.asarray(ts["ksp_its"][1:], float) / np.asarray(ts["newton_its"][1:], float)
         chk.check("fieldsplit: max over steps of Krylov iterations per Newton iteration",
                   float(per_newton.max()), 35.4)
