@@ -259,6 +259,16 @@ CASES = {
                                   "-fieldsplit_displacement_vertex_blocks_dump_operator_setup", "0"],
                             expect=["-fieldsplit_displacement_vertex_blocks_dump_operator_setup 0",
                                     "expected a set-up number >= 1"]),
+    # the coarse lag of vertex_blocks: a number of set-ups below 1, a value that is no integer
+    "coarse_lag_zero": dict(args=["-options_file", "options/solvers/fieldsplit.opts",
+                                  "-fieldsplit_displacement_vertex_blocks_coarse_lag", "0"],
+                            expect=["-fieldsplit_displacement_vertex_blocks_coarse_lag 0",
+                                    "expected a number of set-ups >= 1"]),
+    "coarse_lag_not_integer_np2": dict(args=["-options_file", "options/solvers/fieldsplit.opts",
+                                             "-fieldsplit_displacement_vertex_blocks_coarse_lag",
+                                             "ten"],
+                                       expect=["-fieldsplit_displacement_vertex_blocks_coarse_lag",
+                                               "ten", "expected an integer"], ranks=2),
     # the Krylov test's switch (mass_balance_test.hpp): a value that is no boolean, a misspelling
     "mass_balance_test_maybe": dict(args=["-mass_balance_krylov_test", "maybe"],
                                     expect=["-mass_balance_krylov_test", "maybe",
