@@ -74,9 +74,9 @@ struct Split {
 };
 const Split kSplits[] = {{"displacement", {}}, {"pressures", {"pressure", "interface_pressure"}}};
 /// What follows a split's name in a solver option (its KSP, PC, matrix, inner splits, and
-/// the PC vertex_blocks of the displacement split).
+/// the PCs vertex_blocks of the displacement split and schur_selfp of the pressures).
 const char *const kSolverParts[] = {"ksp_", "pc_",  "mat_",    "fieldsplit_", "vertex_blocks_",
-                                    "mg_",  "sub_", "esteig_", "snes_"};
+                                    "mg_",  "sub_", "esteig_", "snes_",       "schur_selfp_"};
 
 bool startsWith(const std::string &s, const std::string &prefix)
 {

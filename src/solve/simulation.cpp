@@ -20,6 +20,7 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/solver_preset.hpp"
 #include "poroseam/time_integration.hpp"
+#include "poroseam/schur_selfp.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
 #include <algorithm>
@@ -421,6 +422,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(
       SNESSetTolerances(snes, PETSC_DEFAULT, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(registerVertexBlocksPC());
+  PetscCall(registerSchurSelfpPC());
   PetscCall(run.time.beforeOptions(run.ts));
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
