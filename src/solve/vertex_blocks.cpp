@@ -388,7 +388,10 @@ PetscErrorCode setUp(PC pc)
     PetscCall(PCSetFromOptions(vb->inner));
   }
   PetscCall(PCSetOperators(vb->inner, vb->ext, vb->ext));
-  const bool rebuild = vb->setups % vb->coarse_lag == 0;
+  // The lag applies to multigrid (GAMG, ML, PCMG); any other inner PC is rebuilt each time.
+  PetscErrorCode (*mg_levels)(PC, PetscInt *) = nullptr;
+  PetscCall(PetscObjectQueryFunction((PetscObject)vb->inner, "PCMGGetLevels_C", &mg_levels));
+  const bool rebuild = !mg_levels || vb->setups % vb->coarse_lag == 0;
   ++vb->setups;
   PetscCall(dumpOperator(pc, *vb));
   // Coarse lag. A Newton iteration changes the Jacobian where interfaces stick, slip, open or
