@@ -64,6 +64,8 @@ public:
   /// F(x, xdot) assembled into the local vector f (zeroed here).
   PetscErrorCode residual(double t, Vec local, Vec local_rate, const ResidualMode &mode,
                           Vec f) const;
+  /// Destroys what the problem keeps between assemblies (before PetscFinalize).
+  PetscErrorCode release();
   /// dF/dx + shift dF/dxdot assembled into J (zeroed here), with mode.mass_scale and mode.dt
   /// as in residual (mode.include_loads does not matter: loads do not depend on x).
   PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate,
@@ -198,6 +200,10 @@ private:
   physics::GeostaticColumn column_; ///< hydrostatic pressure, geostatic stresses, water load
   double mass_balance_scale_ = 1.0;
   LogEvents events_;
+  /// The Jacobian of the cells without history, for the shift and mass scale it was
+  /// assembled with (jacobian() copies it while they stay the same).
+  mutable Mat linear_cells_jacobian_ = nullptr;
+  mutable double linear_cells_shift_ = 0.0, linear_cells_mass_scale_ = 0.0;
 };
 
 } // namespace poroseam

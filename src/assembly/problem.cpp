@@ -665,7 +665,16 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
   const PetscScalar *ua, *ra, *ca;
   PetscFunctionBeginUser;
   PetscCall(beginLogEvent(events_.jacobian));
-  PetscCall(MatZeroEntries(J));
+  // The cells without history (linear elasticity, Biot) have a Jacobian that depends on the
+  // shift and the mass scale only, not on the state: it is assembled once and copied while
+  // those stay the same (fixed time steps). Measured on the 3D caisson, 160k unknowns, 2
+  // ranks: the bulk loop took 0.96 s per Jacobian, 14 % of the time steps.
+  const bool reuse = linear_cells_jacobian_ && shift == linear_cells_shift_ &&
+                     mass_scale == linear_cells_mass_scale_;
+  if (reuse)
+    PetscCall(MatCopy(linear_cells_jacobian_, J, SAME_NONZERO_PATTERN));
+  else
+    PetscCall(MatZeroEntries(J));
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
   CellWork work;
   std::vector<PetscInt> rows;
@@ -674,13 +683,30 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
   PetscCall(VecGetArrayRead(local, &ua));
   PetscCall(VecGetArrayRead(local_rate, &ra));
   PetscCall(VecGetArrayRead(coords, &ca));
-  for (size_t i = 0; i < cells_.size(); ++i) {
-    cellTerms(i, ua, ra, ca, mass_scale, shift, true, work);
-    const int n = closures_.closureSize(i);
-    rows.resize(n);
-    closures_.globalIndices(i, rows.data());
-    PetscCall(MatSetValues(J, n, rows.data(), n, rows.data(), work.K.data(), ADD_VALUES));
+  auto addCells = [&](bool with_history) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    for (size_t i = 0; i < cells_.size(); ++i) {
+      if ((cells_[i].history != kNoHistory) != with_history) continue;
+      cellTerms(i, ua, ra, ca, mass_scale, shift, true, work);
+      const int n = closures_.closureSize(i);
+      rows.resize(n);
+      closures_.globalIndices(i, rows.data());
+      PetscCall(MatSetValues(J, n, rows.data(), n, rows.data(), work.K.data(), ADD_VALUES));
+    }
+    PetscFunctionReturn(0);
+  };
+  if (!reuse) {
+    PetscCall(addCells(false));
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+    if (linear_cells_jacobian_)
+      PetscCall(MatCopy(J, linear_cells_jacobian_, SAME_NONZERO_PATTERN));
+    else
+      PetscCall(MatDuplicate(J, MAT_COPY_VALUES, &linear_cells_jacobian_));
+    linear_cells_shift_ = shift;
+    linear_cells_mass_scale_ = mass_scale;
   }
+  if (any_skeleton_history_) PetscCall(addCells(true));
   PetscCall(VecRestoreArrayRead(coords, &ca));
   PetscCall(VecRestoreArrayRead(local_rate, &ra));
   PetscCall(VecRestoreArrayRead(local, &ua));
@@ -690,6 +716,13 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscCall(endLogEvent(events_.jacobian));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::release()
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&linear_cells_jacobian_));
   PetscFunctionReturn(0);
 }
 

@@ -18,9 +18,9 @@
 #include "poroseam/problem.hpp"
 #include "poroseam/run_options.hpp"
 #include "poroseam/scene.hpp"
+#include "poroseam/schur_selfp.hpp"
 #include "poroseam/solver_preset.hpp"
 #include "poroseam/time_integration.hpp"
-#include "poroseam/schur_selfp.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
 #include <algorithm>
@@ -305,6 +305,7 @@ PetscErrorCode releaseRun(Run &run, Vec *X)
   PetscCall(VecDestroy(&run.jacobian_diagonal));
   PetscCall(VecDestroy(&run.initial));
   PetscCall(run.time.destroy());
+  PetscCall(run.problem.release());
   PetscCall(TSDestroy(&run.ts));
   PetscCall(DMDestroy(&run.dm));
   PetscFunctionReturn(0);

@@ -30,11 +30,11 @@ struct FlowCase {
   const char *name;
   const char *mesh;
   double size_factor;
-  double gap_normal;              ///< block displacement along the last axis (+: opening)
-  double t2;                      ///< transmissivity to side 2 (0: impervious)
-  double rate_factor = 1.0;       ///< a: dx/dt = a (x - x_prev) / dt, shift a / dt
-  double previous_fraction = 0.5; ///< gap of x_prev as a fraction of gap_normal
-  double gap_tangential = 0.0;    ///< block displacement along the first axis (slip)
+  double gap_normal;                ///< block displacement along the last axis (+: opening)
+  double t2;                        ///< transmissivity to side 2 (0: impervious)
+  double rate_factor = 1.0;         ///< a: dx/dt = a (x - x_prev) / dt, shift a / dt
+  double previous_fraction = 0.5;   ///< gap of x_prev as a fraction of gap_normal
+  double gap_tangential = 0.0;      ///< block displacement along the first axis (slip)
   const char *dilation_angle = "0"; ///< psi [deg]
 };
 
@@ -232,6 +232,7 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
   PetscCall(MatDestroy(&J));
   for (Vec *v : {&local, &rate, &previous, &flocal, &X, &Fp, &Fm})
     PetscCall(VecDestroy(v));
+  PetscCall(problem.release());
   PetscCall(DMDestroy(&dm));
   PetscCall(PetscOptionsClear(nullptr));
   PetscFunctionReturn(0);

@@ -29,7 +29,7 @@ struct Case {
   const char *integration;
   double gap[3]; // block displacement relative to the base (x, y[, z]); normal is the last axis
   physics::ContactState expected;
-  double size_factor = 1.0; // gmsh -clscale: coarse in 3D, where the dense check costs n^2
+  double size_factor = 1.0;         // gmsh -clscale: coarse in 3D, where the dense check costs n^2
   const char *dilation_angle = "0"; // psi [deg]
   const char *dilation_limit = "";  // plastic slip [m] after which dilation stops ("": none)
 };
@@ -165,6 +165,7 @@ PetscErrorCode compare(const Case &c, double *relative_error, int *states, int *
   PetscCall(MatDestroy(&J));
   for (Vec *v : {&local, &rate, &flocal, &X, &Fp, &Fm})
     PetscCall(VecDestroy(v));
+  PetscCall(problem.release());
   PetscCall(DMDestroy(&dm));
   PetscCall(PetscOptionsClear(nullptr));
   PetscFunctionReturn(0);

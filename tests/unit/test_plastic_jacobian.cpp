@@ -239,6 +239,7 @@ PetscErrorCode compareJacobian(const Case &c, Result *result)
   PetscCall(VecDestroy(&rate));
   PetscCall(VecDestroy(&previous));
   PetscCall(VecDestroy(&flocal));
+  PetscCall(problem.release());
   PetscCall(DMDestroy(&dm));
   PetscFunctionReturn(0);
 }
