@@ -44,17 +44,16 @@ PetscErrorCode setUp(PC pc)
   PetscCall(VecReciprocal(sp->inverse_diagonal));
   if (same_pattern) {
     PetscCall(MatCopy(A01, sp->scaled_B, SAME_NONZERO_PATTERN));
-    PetscCall(MatDiagonalScale(sp->scaled_B, sp->inverse_diagonal, nullptr));
-    PetscCall(MatMatMult(A10, sp->scaled_B, MAT_REUSE_MATRIX, PETSC_DEFAULT, &sp->product));
   } else {
     PetscCall(MatDestroy(&sp->product));
     PetscCall(MatDestroy(&sp->scaled_B));
     PetscCall(MatDuplicate(A01, MAT_COPY_VALUES, &sp->scaled_B));
-    PetscCall(MatDiagonalScale(sp->scaled_B, sp->inverse_diagonal, nullptr));
-    PetscCall(MatMatMult(A10, sp->scaled_B, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &sp->product));
     sp->pattern_A01 = state01;
     sp->pattern_A10 = state10;
   }
+  PetscCall(MatDiagonalScale(sp->scaled_B, sp->inverse_diagonal, nullptr));
+  PetscCall(MatMatMult(A10, sp->scaled_B, same_pattern ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX,
+                       PETSC_DEFAULT, &sp->product));
   // A11 - product. The sum's pattern is the union of two patterns, and MatAYPX replaces the
   // matrix it works on, so it gets a copy of the product (whose symbolic part is what we keep).
   PetscCall(MatDestroy(&sp->selfp));

@@ -493,7 +493,6 @@ PetscErrorCode view(PC pc, PetscViewer viewer)
 PetscErrorCode setFromOptions(PC pc, PetscOptionItems *PetscOptionsObject)
 {
   auto *vb = static_cast<VertexBlocksPC *>(pc->data);
-  PetscBool set = PETSC_FALSE;
   PetscInt lag = vb->coarse_lag;
   const char *prefix;
   PetscFunctionBeginUser;
@@ -501,7 +500,7 @@ PetscErrorCode setFromOptions(PC pc, PetscOptionItems *PetscOptionsObject)
   PetscCall(PetscOptionsInt("-vertex_blocks_coarse_lag",
                             "rebuild the inner multigrid's coarse levels every N set-ups (1: at "
                             "each); the finest level takes every new operator",
-                            "docs/scenes.md", lag, &lag, &set));
+                            "docs/scenes.md", lag, &lag, nullptr));
   PetscOptionsHeadEnd();
   PetscCall(PCGetOptionsPrefix(pc, &prefix));
   PetscCheck(lag >= 1, PetscObjectComm((PetscObject)pc), PETSC_ERR_USER_INPUT,
