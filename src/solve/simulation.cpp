@@ -8,6 +8,7 @@
 #include "poroseam/interface_writer.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
+#include "poroseam/penalty_check.hpp"
 #include "poroseam/log_events.hpp"
 #include "poroseam/mass_balance_test.hpp"
 #include "poroseam/mesh.hpp"
@@ -353,6 +354,8 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(readSceneOptions(comm, names, dim, run.scene));
   PetscCall(splitInterfaces(&run.dm, run.scene));
   PetscCall(markLayoutLabels(run.dm, run.scene));
+  // Before distribution: rank 0 holds both sides of every interface face.
+  PetscCall(warnAboutPenalties(run.dm, run.scene));
   PetscCall(endLogPhase(run.events.mesh));
   PetscCall(beginLogPhase(run.events.distribution));
   PetscCall(distributeMesh(&run.dm));

@@ -361,6 +361,21 @@ CASES = {
                              "-gravity", "9.81", "-initial_state", "geostatic",
                              "-surface_elevation", "1"],
         expect=["region 'soil'", "outside the yield surface", "-region_soil_K0"]),
+    # interface penalties far from K h / E in [1, 1e4] (docs/interface_parameters.md): one
+    # warning line per interface and stiffness at set-up, naming both and the advised range;
+    # the run goes on. The scene's own penalties (K h / E about 2e3) give none.
+    "penalty_soft_warning_np2": dict(
+        scene=JOINT_SCENE, args=["-interface_joint_KN", "1e5", "-bc_left_p3", "0", "-ts_max_time", "0.2"],
+        ok=True, ranks=2, count=("poroseam: warning: interface joint: K_N", 1),
+        expect=["interface joint: K_N = 100000 Pa/m is soft", "10 to 1000 E / h"],
+        absent_text=["K_T = "]),
+    "penalty_stiff_warning": dict(
+        scene=JOINT_SCENE, args=["-interface_joint_KT", "1e18", "-bc_left_p3", "0", "-ts_max_time", "0.2"],
+        ok=True, count=("poroseam: warning: interface joint: K_T", 1),
+        expect=["interface joint: K_T = 1e+18 Pa/m is stiff"], absent_text=["K_N = "]),
+    "penalty_fine_no_warning": dict(
+        scene=JOINT_SCENE, args=["-bc_left_p3", "0", "-ts_max_time", "0.2"], ok=True,
+        expect=["1 steps"], absent_text=["poroseam: warning: interface"]),
     "help": dict(help=True, ok=True,
                  expect=["-region_<r>_E", "-region_<r>_permeability", "-bc_<b>_traction",
                          "-initial_state", "-probe_<name>", "timeseries.csv"]),
@@ -665,6 +680,10 @@ def main():
     for s in case.get("absent_text", []):
         if s in text:
             failures.append(f"the output contains '{s}'")
+    if "count" in case:  # a line printed once, by rank 0 only
+        lines = [l for l in text.splitlines() if l.startswith(case["count"][0])]
+        if len(lines) != case["count"][1]:
+            failures.append(f"{len(lines)} lines starting '{case['count'][0]}', expected {case['count'][1]}")
     if not case.get("ok"):
         # one line that says it, once (not once per rank), without PETSc's banner or an abort
         errors = [l for l in text.splitlines() if l.startswith("poroseam: error:")]
