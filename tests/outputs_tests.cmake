@@ -12,3 +12,9 @@ poroseam_scene_test(outputs.meshio "outputs" outputs/outputs.py --case meshio)
 poroseam_scene_test(outputs.petsc_vtk "outputs;mpi" outputs/outputs.py --case petsc_vtk)
 set_tests_properties(outputs.meshio outputs.petsc_vtk PROPERTIES SKIP_RETURN_CODE 77)
 set_tests_properties(outputs.ranks outputs.petsc_vtk PROPERTIES PROCESSORS 2)
+# The time-series plots: nothing empty for a drained run, the interface flow columns drawn
+# (tests/outputs/plots.py; scripts/plot_timeseries).
+foreach(case drained interface_flow)
+  poroseam_scene_test(outputs.plots_${case} "outputs" outputs/plots.py --case ${case})
+  set_tests_properties(outputs.plots_${case} PROPERTIES PROCESSORS 2)
+endforeach()
