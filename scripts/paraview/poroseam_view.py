@@ -25,6 +25,33 @@ STATE_NAMES = ("open", "stick", "slip")
 # Interface state colours, apart from the cool-to-warm pressure map (blue - grey - red).
 STATE_COLOURS = ((0.0, 0.0, 0.0), (0.0, 0.70, 0.0), (0.85, 0.0, 0.85))
 NAN_GREY = (0.42, 0.43, 0.46)  # steel-like, darker than the map's light grey zero
+# yield_state of Mohr-Coulomb cells (docs/outputs.md)
+YIELD_NAMES = ("elastic", "face", "edge", "apex", "tension cut-off")
+YIELD_COLOURS = ((0.88, 0.88, 0.88), (0.99, 0.75, 0.2), (0.9, 0.35, 0.1), (0.6, 0.0, 0.0),
+                 (0.2, 0.3, 0.8))
+# tensor cell fields [Nc, 9] (row by row) and their components: --field effective_stress_yy
+TENSORS = ("effective_stress", "total_stress", "strain")
+COMPONENTS = {c: 3 * "xyz".index(c[0]) + "xyz".index(c[1])
+              for c in ("xx", "yy", "zz", "xy", "yz", "xz", "yx", "zy", "zx")}
+
+
+def field_choices(point_arrays, cell_arrays):
+    """What --field accepts for this output: point scalars, cell scalars and tensor components."""
+    names = sorted(a for a in point_arrays if a in ("pressure", "excess_pressure"))
+    names += ["displacement_magnitude"]
+    names += sorted(a for a in cell_arrays if a in ("equivalent_plastic_strain", "yield_state", "region"))
+    names += [f"{t}_{c}" for t in TENSORS if t in cell_arrays for c in ("xx", "yy", "zz", "xy", "yz", "xz")]
+    return names
+
+
+def cell_field(field, cell_arrays):
+    """(array, component or None) when field is a cell field of this output, else None."""
+    if field in cell_arrays and field not in TENSORS:
+        return field, None
+    for t in TENSORS:
+        if field.startswith(t + "_") and field[len(t) + 1:] in COMPONENTS and t in cell_arrays:
+            return t, COMPONENTS[field[len(t) + 1:]]
+    return None
 
 
 class ViewError(Exception):
@@ -77,9 +104,9 @@ def nice_floor(x):
     return 10**k
 
 
-def fetch_arrays(source, names, time):
-    """numpy arrays of the named point arrays of a source at a time, all blocks concatenated
-    (the data of this small pipeline fits on the client)."""
+def fetch_arrays(source, names, time, cells=False):
+    """numpy arrays of the named point (or cell) arrays of a source at a time, all blocks
+    concatenated (the data of this small pipeline fits on the client)."""
     import numpy as np
     from vtkmodules.numpy_interface import dataset_adapter as dsa
 
@@ -87,7 +114,7 @@ def fetch_arrays(source, names, time):
     data = dsa.WrapDataObject(servermanager.Fetch(source))
     out = {}
     for name in names:
-        array = data.PointData[name]
+        array = (data.CellData if cells else data.PointData)[name]
         if isinstance(array, dsa.VTKNoneArray):
             out[name] = None
             continue
@@ -153,19 +180,24 @@ class Pipeline:
             self.slice, self.slice_axis = None, None
 
         # the field shown
+        cell_arrays = set(bulk.CellData.keys())
         if field is None:
             field = next((f for f in ("excess_pressure", "pressure") if f in point_arrays), None)
-        if field is not None and field not in point_arrays:
-            raise ViewError(f"{fields_xmf}: no point array '{field}' (it has: "
-                            f"{', '.join(sorted(point_arrays))})")
+        if field == "displacement_magnitude":
+            field = None
+        choices = field_choices(point_arrays, cell_arrays)
+        cell = cell_field(field, cell_arrays) if field is not None else None
+        if field is not None and cell is None and field not in point_arrays:
+            raise ViewError(f"--field {field}: not in {fields_xmf}; expected one of "
+                            f"{', '.join(choices)}")
         if "displacement" not in point_arrays:
             raise ViewError(f"{fields_xmf}: no displacement array")
-        values = fetch_arrays(section, ["displacement"] + ([field] if field else []), self.time)
+        values = fetch_arrays(section, ["displacement"] + ([field] if field and cell is None else []),
+                              self.time)
         import numpy as np
 
-        if field is not None and values[field] is not None and np.ndim(values[field]) != 1:
-            raise ViewError(f"--field {field}: a vector or tensor; expected a scalar point array "
-                            "(pressure, excess_pressure)")
+        if field is not None and cell is None and values[field] is not None and np.ndim(values[field]) != 1:
+            raise ViewError(f"--field {field}: a vector or tensor; expected one of {', '.join(choices)}")
 
         u = values["displacement"]
         umax = float(np.nanmax(np.linalg.norm(u, axis=1))) if u is not None and len(u) else 0.0
@@ -184,7 +216,47 @@ class Pipeline:
         warped.Vectors = ["POINTS", "displacement"]
         warped.ScaleFactor = scale
         shown = warped
-        if field is not None:
+        self.association = "POINTS"
+        self.categories = None
+        if cell is not None:
+            self.association = "CELLS"
+            array, component = cell
+            if component is not None:
+                # a component of a tensor, stresses in kPa (tension positive, docs/physics.md)
+                stress = array.endswith("stress")
+                self.array = field + ("_kPa" if stress else "")
+                shown = PythonCalculator(registrationName=field, Input=warped)
+                shown.ArrayAssociation = "Cell Data"
+                shown.ArrayName = self.array
+                shown.Expression = f"{array}[:, {component}]" + (" / 1000" if stress else "")
+                what = {"effective_stress": "effective stress", "total_stress": "total stress",
+                        "strain": "strain"}[array]
+                self.label = f"{what} {field[-2:]}" + (" [kPa]" if stress else " [-]")
+                v = fetch_arrays(shown, [self.array], self.time, cells=True)[self.array]
+                finite = v[np.isfinite(v)] if v is not None else []
+                vmax = float(np.max(np.abs(finite))) if len(finite) else 0.0
+                self.range = (-vmax, vmax) if vmax > 0 else (-1.0, 1.0)
+                self.diverging = True
+            else:
+                self.array = array
+                v = fetch_arrays(section, [array], self.time, cells=True)[array]
+                finite = v[np.isfinite(v)] if v is not None else []
+                if array == "yield_state":
+                    self.label = "Mohr-Coulomb yield state"
+                    self.categories = (YIELD_NAMES, YIELD_COLOURS)
+                    self.range = (0.0, float(len(YIELD_NAMES) - 1))
+                    yielded = int(np.sum(finite > 0)) if len(finite) else 0
+                    self.notes.append(f"{yielded} of {len(finite)} cells yielding")
+                elif array == "region":
+                    self.label = "region"
+                    self.range = (0.0, float(np.max(finite)) if len(finite) else 1.0)
+                else:  # equivalent_plastic_strain: 0 in elastic cells and regions
+                    self.label = "equivalent plastic strain [-]"
+                    vmax = float(np.max(finite)) if len(finite) else 0.0
+                    self.range = (0.0, vmax if vmax > 0 else 1.0)
+                    self.notes.append(f"largest {vmax:.3g}")
+                self.diverging = False
+        elif field is not None:
             kpa = field.endswith("pressure")
             self.label = {"excess_pressure": "excess pore pressure", "pressure": "pore pressure"}.get(field, field)
             self.array = field
@@ -203,7 +275,7 @@ class Pipeline:
             vmax = float(np.max(np.abs(finite))) / (1000.0 if kpa else 1.0) if len(finite) else 0.0
             self.range = (-vmax, vmax) if vmax > 0 else (-1.0, 1.0)
             self.diverging = True
-        else:  # drained: no pressure
+        else:  # drained, or asked for: |u|
             shown = Calculator(registrationName="displacement magnitude", Input=warped)
             self.label = "displacement magnitude [mm]"
             self.array = "displacement_magnitude_mm"
@@ -309,9 +381,14 @@ class Pipeline:
             pass
         d = Show(self.bulk_out, view)
         d.Ambient, d.Diffuse = 1.0, 0.0  # unshaded: the colours of the colour bar
-        ColorBy(d, ("POINTS", self.array))
+        ColorBy(d, (self.association, self.array))
         lut = GetColorTransferFunction(self.array)
         lut.ApplyPreset("Cool to Warm" if self.diverging else "Viridis (matplotlib)", True)
+        if self.categories is not None:
+            names, colours = self.categories
+            lut.InterpretValuesAsCategories = 1
+            lut.Annotations = [x for i, n in enumerate(names) for x in (str(i), n)]
+            lut.IndexedColors = [c for rgb in colours for c in rgb]
         lut.RescaleTransferFunction(*self.range)
         lut.AutomaticRescaleRangeMode = "Never"
         lut.NanColor = list(NAN_GREY)

@@ -13,8 +13,10 @@ last), --scale S (displacement factor; default automatic), --reflect / --no-refl
 x = 0; default: when run.yaml says -axisymmetric), --view x0,x1,y0,y1 (the region shown, in
 the picture's coordinates: (r, z) in 2D, (x or y, z) in a 3D section), --slice AXIS=VALUE
 (3D: the section plane, default the middle of the mesh across y), --field NAME (default
-excess_pressure, else pressure, else |u|), --size WxH (pixels, default 1200x800),
---title TEXT.
+excess_pressure, else pressure, else displacement_magnitude; cell fields too:
+equivalent_plastic_strain, yield_state, region, and components of the tensors
+effective_stress_xx ... _xz, total_stress_*, strain_* -- a wrong name lists what the output
+has), --size WxH (pixels, default 1200x800), --title TEXT.
 Prints one line: the PNG's path and what it shows.
 """
 import argparse
@@ -37,7 +39,8 @@ def floats(text, n, what):
 
 def parse(argv):
     """(args, the keyword arguments of Pipeline) from the command line."""
-    ap = argparse.ArgumentParser(prog="render.py", description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(prog="render_fields", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("output_dir")
     ap.add_argument("--output", help="PNG file (default OUTPUT_DIR/fields.png)")
     ap.add_argument("--state", help="ParaView state file (default: the PNG with .pvsm; 'none': none)")
@@ -47,7 +50,7 @@ def parse(argv):
     ap.add_argument("--no-reflect", dest="reflect", action="store_false")
     ap.add_argument("--view", type=lambda s: floats(s, 4, "--view x0,x1,y0,y1"))
     ap.add_argument("--slice", help="3D: section plane AXIS=VALUE, e.g. y=0.001")
-    ap.add_argument("--field")
+    ap.add_argument("--field", help="what to colour by (see above)")
     ap.add_argument("--size", default="1200x800")
     ap.add_argument("--title")
     args = ap.parse_args(argv)

@@ -230,7 +230,7 @@ def case_axisym_drained(args):
         chk.check(f"uplift at full mobilisation of the outer skirt (reported; paper {PAPER_MOBILISED_MM} mm) "
                   "in [0.2, 2] mm", u, 2.0, ok=0.2 <= u <= 2.0, unit=" mm")
     if args.plot:
-        plot(chk, run, ["fig6a_forces.png", "fig7_mobilised_friction.png", "fig9b_lid_flux.png"])
+        plot(chk, run, ["fig6a_forces.png", "fig7_mobilised_friction.png", "fig9b_soil_uplift.png"])
     chk.finish()
 
 
