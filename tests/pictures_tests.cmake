@@ -6,3 +6,7 @@
 # Included by tests/CMakeLists.txt.
 poroseam_scene_test(pictures.caisson_fig9a "pictures" pictures/pictures.py)
 set_tests_properties(pictures.caisson_fig9a PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
+# The plastic zone (render_fields --field equivalent_plastic_strain / yield_state) against
+# fields.h5 (tests/pictures/plastic_zone.py); SKIPPED without pvpython.
+poroseam_scene_test(pictures.plastic_zone "pictures" pictures/plastic_zone.py)
+set_tests_properties(pictures.plastic_zone PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)

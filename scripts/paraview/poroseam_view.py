@@ -228,7 +228,8 @@ class Pipeline:
                 shown = PythonCalculator(registrationName=field, Input=warped)
                 shown.ArrayAssociation = "Cell Data"
                 shown.ArrayName = self.array
-                shown.Expression = f"{array}[:, {component}]" + (" / 1000" if stress else "")
+                # ParaView reads the [Nc, 9] dataset as 3 x 3 tensors: flatten them back
+                shown.Expression = f"{array}.reshape(-1, 9)[:, {component}]" + (" / 1000" if stress else "")
                 what = {"effective_stress": "effective stress", "total_stress": "total stress",
                         "strain": "strain"}[array]
                 self.label = f"{what} {field[-2:]}" + (" [kPa]" if stress else " [-]")
