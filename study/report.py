@@ -218,6 +218,23 @@ def _label(r):
     return f"{r['parameter_value']:g}"
 
 
+class _Labels:
+    """Point labels of one log-log axes that do not print over each other: a label is left
+    out when an earlier one sits within `gap` decades in both directions (the legend and the
+    study.csv name every run; the labels only orient the eye)."""
+
+    def __init__(self, ax, gap=0.07):
+        self.ax, self.gap, self.placed = ax, gap, []
+
+    def add(self, text, x, y, color):
+        lx, ly = math.log10(x), math.log10(y)
+        if any(abs(lx - px) < self.gap and abs(ly - py) < self.gap for px, py in self.placed):
+            return
+        self.placed.append((lx, ly))
+        self.ax.annotate(text, (x, y), fontsize=7, xytext=(3, 3), textcoords="offset points",
+                         color=color)
+
+
 def plot(st, rows, summary, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -237,6 +254,7 @@ def plot(st, rows, summary, path):
     work = "krylov" if tol_only else "unknowns"
     for qi, q in enumerate(qs):
         a1, a2 = axes[qi]
+        labels1, labels2 = _Labels(a1), _Labels(a2)
         for li, ln in enumerate(lines):
             rs = [r for r in rows if r["line"] == ln and r["status"] == "ok"
                   and np.isfinite(r[f"{q.name}_error"]) and r[f"{q.name}_error"] > 0]
@@ -246,8 +264,7 @@ def plot(st, rows, summary, path):
             e = [100.0 * r[f"{q.name}_error"] for r in rs]
             a1.loglog([r["wall_total_s"] for r in rs], e, "o-", color=c, label=ln)
             for r in rs:
-                a1.annotate(_label(r), (r["wall_total_s"], 100.0 * r[f"{q.name}_error"]), fontsize=7,
-                            xytext=(3, 3), textcoords="offset points", color=c)
+                labels1.add(_label(r), r["wall_total_s"], 100.0 * r[f"{q.name}_error"], c)
             o = order.get((ln, q.name), {})
             so = o.get("observed_order", float("nan"))
             sl = o.get("error_slope", float("nan"))
@@ -258,17 +275,26 @@ def plot(st, rows, summary, path):
                             f"{ln}: error slope vs {rs[0]['parameter']} {sl:.2f}")
             if tol_only:
                 for r in rs:
-                    a2.annotate(_label(r), (r[work], 100.0 * r[f"{q.name}_error"]), fontsize=7,
-                                xytext=(3, 3), textcoords="offset points", color=c)
+                    labels2.add(_label(r), r[work], 100.0 * r[f"{q.name}_error"], c)
+        # the targets: dashed, dark enough to read, named at the right edge of each panel
         for tgt in st.targets:
             for ax in (a1, a2):
-                ax.axhline(100.0 * tgt, color="0.8", lw=0.8, ls=":", zorder=0)
+                ax.axhline(100.0 * tgt, color="0.35", lw=1.0, ls="--", zorder=0.5)
+                ax.annotate(f"{100.0 * tgt:g} %", (1.0, 100.0 * tgt), xycoords=("axes fraction", "data"),
+                            xytext=(-2, 2), textcoords="offset points", ha="right", va="bottom",
+                            fontsize=7, color="0.25")
         a1.set_xlabel("wall time of the run [s]")
         a1.set_ylabel(f"error of {q.name} [{q.unit}]")
         # wall times span one or two decades: label 2 and 5 between the powers of ten
         a1.xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
-        a1.xaxis.set_minor_formatter(matplotlib.ticker.FuncFormatter(
-            lambda v, _: f"{v:g}" if round(v / 10 ** math.floor(math.log10(v))) in (2, 5) else ""))
+        lo, hi = a1.get_xlim()
+        if hi / lo > 10:
+            a1.xaxis.set_minor_formatter(matplotlib.ticker.FuncFormatter(
+                lambda v, _: f"{v:g}" if round(v / 10 ** math.floor(math.log10(v))) in (2, 5) else ""))
+        else:  # within a decade (quick runs): evenly spaced ticks, each labelled
+            a1.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(5))
+            a1.xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:.3g}"))
+            a1.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         a1.set_title(f"{q.label}", fontsize=10)
         if tol_only:
             a2.set_xlabel("Krylov iterations of the run (sum over its steps)")
