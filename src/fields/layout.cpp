@@ -27,11 +27,15 @@ PetscErrorCode lateralEdgesOnBoundary(DM dm, const std::string &boundary,
   PetscCall(ISGetLocalSize(is, &n));
   PetscCall(ISGetIndices(is, &idx));
   for (PetscInt k = 0; k < n; ++k) {
+    // Either vertex of the split pair: where the interface ends between two bodies (a sheet
+    // pile's head at the ground surface), the boundary's faces touch only one copy, and which
+    // copy the split numbers first is not the side the boundary is on.
     const PetscInt *cone;
-    PetscInt on = -1;
+    PetscInt on0 = -1, on1 = -1;
     PetscCall(DMPlexGetCone(dm, idx[k], &cone));
-    PetscCall(DMLabelGetValue(label, cone[0], &on));
-    if (on == 1) edges.push_back(idx[k]);
+    PetscCall(DMLabelGetValue(label, cone[0], &on0));
+    PetscCall(DMLabelGetValue(label, cone[1], &on1));
+    if (on0 == 1 || on1 == 1) edges.push_back(idx[k]);
   }
   PetscCall(ISRestoreIndices(is, &idx));
   PetscCall(ISDestroy(&is));
