@@ -175,6 +175,8 @@ PetscErrorCode postStep(TS ts)
   ++run.step;
   double t, t_previous;
   PetscCall(TSGetTime(ts, &t));
+  PetscCall(settleOnFinalTime(ts, &t)); // the last step ends on -ts_max_time exactly
+  PetscCall(TSGetConvergedReason(ts, &reason));
   PetscCall(TSGetPrevTime(ts, &t_previous));
   const double dt = t - t_previous; // the step just taken (after any cut-back)
   Vec X, local, rate;
@@ -406,6 +408,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   TSAdapt adapt;
   PetscCall(TSGetAdapt(run.ts, &adapt));
   PetscCall(TSAdaptSetScaleSolveFailed(adapt, 0.5));
+  PetscCall(TSSetPreStep(run.ts, landOnFinalTime));
   PetscCall(TSSetPostStep(run.ts, postStep));
   SNES snes;
   PetscCall(TSGetSNES(run.ts, &snes));
