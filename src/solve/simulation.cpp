@@ -104,9 +104,10 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   PetscFunctionReturn(0);
 }
 
-/// One row of timeseries.csv and, every output_every steps, the fields.
+/// One row of timeseries.csv and, every output_every steps and at the `last` step of the run,
+/// the fields.
 PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
-                          PetscInt ksp, PetscInt rejected, double wall)
+                          PetscInt ksp, PetscInt rejected, double wall, bool last = false)
 {
   std::vector<double> resultants, probes, interface;
   PetscFunctionBeginUser;
@@ -118,7 +119,9 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
                    StepRow{run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)ksp,
                            (int)rejected, wall},
                    resultants, interface, probes);
-  if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0) {
+  // The final state always: after cut-backs the step count need not be a multiple of
+  // output_every (a run to 3000 s ended with its last field at 2920 s).
+  if (run.scene.output_every > 0 && (run.step % run.scene.output_every == 0 || last)) {
     CellFields cells;
     PetscCall(run.problem.cellFields(local, cells));
     PetscCall(run.fields.write(t, local, run.initial, &cells));
@@ -212,7 +215,9 @@ PetscErrorCode postStep(TS ts)
   const PetscInt rejected = rejects - run.last_rejects;
   run.last_snes_its = snes_its, run.last_ksp_its = ksp_its, run.last_rejects = rejects;
   const double wall = MPI_Wtime() - run.step_start;
-  PetscCall(recordStep(run, t, dt, local, rate, newton, krylov, rejected, wall));
+  // The run's last step: it reached the final time or the step limit (TS has said so).
+  const bool last = reason != TS_CONVERGED_ITERATING;
+  PetscCall(recordStep(run, t, dt, local, rate, newton, krylov, rejected, wall, last));
   // A checkpoint after this step: every checkpoint_every steps, and when a signal asks the
   // run to stop (unless this was the last step anyway).
   int signal = 0;
