@@ -21,6 +21,12 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
 /// metis keeps cohesive cells with their bulk neighbours, see partition.hpp).
 PetscErrorCode distributeMesh(DM *dm);
 
+/// A number for every local point of the (distributed) mesh that does not depend on the
+/// number of ranks or the partition: its point number in the mesh as read and split into
+/// interfaces, before distributeMesh (which keeps it). The output files order their vertices
+/// and cells by it, so the same run writes the same files.
+PetscErrorCode serialPointNumbers(DM dm, std::vector<PetscInt> &number);
+
 /// Stops with a clear error when a bulk cell has a non-positive Jacobian determinant
 /// (inverted element), naming the cell and its centroid.
 PetscErrorCode checkCellOrientation(DM dm);

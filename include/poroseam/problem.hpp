@@ -109,6 +109,13 @@ public:
       const std::function<void(PetscInt cell, double equivalent_plastic_strain, int state)> &f)
       const;
 
+  /// The terms of the applied tractions, fluxes and free water's load at time t (those the
+  /// residual has with include_loads: -int t.v, +mass_scale int psi q_n), added into the local
+  /// vector f. With `totals`: their sums over each of scene().boundaries, dim + 1 numbers per
+  /// boundary: the force on the body [N] and the outflow times mass_scale, over this rank's
+  /// faces (each face is on one rank).
+  PetscErrorCode addLoads(double t, double mass_scale, Vec f, std::vector<double> *totals) const;
+
   /// Factor S [Pa/m] that turns the mass balance times dt (a volume) into a force: the largest
   /// constrained modulus of the porous regions over their mean cell size. The solver
   /// multiplies the mass balance by -dt S, one constant for all rows, so the discrete
@@ -140,6 +147,7 @@ private:
     int condition; ///< index in scene.conditions, or kWaterLoad
     int element;
     double normal[3]; ///< outward unit normal (water load only)
+    int boundary;     ///< index in scene.boundaries (-1: not one of them)
   };
   /// LoadedFace::condition of a face of -water_load_boundaries.
   static constexpr int kWaterLoad = -1;
@@ -160,6 +168,8 @@ private:
                                 const std::vector<double> &top);
   /// Outward unit normal of a boundary face of `cell` (zero components beyond dim).
   PetscErrorCode outwardNormal(PetscInt face, PetscInt cell, double normal[3]) const;
+  /// The faces with tractions or fluxes (boundary_loads.cpp), then those of the free water.
+  PetscErrorCode setupLoadedFaces();
   /// The faces of -water_load_boundaries with their outward normals, appended to faces_.
   PetscErrorCode setupWaterLoad(const std::vector<char> &ghost, PetscInt pStart);
   double gravityVector(int d) const;

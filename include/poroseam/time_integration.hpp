@@ -10,6 +10,18 @@
 
 namespace poroseam {
 
+/// The share of a step below which the time left after it is round-off, not a step of its own:
+/// the step is stretched by it instead (docs/time_stepping.md, "The last step").
+constexpr double kFinalTimeMerge = 1e-6;
+
+/// TS pre-step hook: a step that would end within kFinalTimeMerge of itself before the final
+/// time (-ts_max_time), or beyond it, is set to end on the final time.
+PetscErrorCode landOnFinalTime(TS ts);
+/// After a step that was set to land on the final time: its end time is made exactly the
+/// final time (t + (t_end - t) can round off by an ulp) and TS is told the run is done.
+/// `t` is the step's end time, updated.
+PetscErrorCode settleOnFinalTime(TS ts, double *t);
+
 class TimeIntegration {
 public:
   TimeIntegration() = default;

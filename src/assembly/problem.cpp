@@ -205,53 +205,6 @@ PetscErrorCode Problem::outwardNormal(PetscInt face, PetscInt cell, double norma
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Problem::setupWaterLoad(const std::vector<char> &ghost, PetscInt pStart)
-{
-  DMLabel faceSets;
-  std::string error;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLabel(dm_, "Face Sets", &faceSets));
-  for (const auto &b : scene_->water_load_boundaries) {
-    IS faces = nullptr;
-    if (faceSets) PetscCall(DMLabelGetStratumIS(faceSets, b.tag, &faces));
-    if (!faces) continue;
-    const PetscInt *idx;
-    PetscInt n;
-    PetscCall(ISGetLocalSize(faces, &n));
-    PetscCall(ISGetIndices(faces, &idx));
-    for (PetscInt k = 0; k < n; ++k) {
-      if (ghost[idx[k] - pStart]) continue;
-      const PetscInt *support;
-      PetscInt ns;
-      PetscCall(DMPlexGetSupportSize(dm_, idx[k], &ns));
-      PetscCall(DMPlexGetSupport(dm_, idx[k], &support));
-      if (ns != 1) {
-        // Inside the mesh the water would push both sides: it is not a free surface.
-        error = "-water_load_boundaries: boundary '" + b.name +
-                "' has faces inside the mesh; the water can only stand on the outer boundary";
-        break;
-      }
-      DMPolytopeType ct;
-      PetscCall(DMPlexGetCellType(dm_, idx[k], &ct));
-      LoadedFace f{idx[k], kWaterLoad, 0, {0, 0, 0}};
-      PetscCall(elementIndex(ct, &f.element));
-      PetscCall(outwardNormal(idx[k], support[0], f.normal));
-      faces_.push_back(f);
-    }
-    PetscCall(ISRestoreIndices(faces, &idx));
-    PetscCall(ISDestroy(&faces));
-  }
-  PetscCall(checkOnAllRanks(PetscObjectComm((PetscObject)dm_), error));
-  PetscFunctionReturn(0);
-}
-
-double Problem::loadFactor(double t) const
-{
-  for (const auto &bc : scene_->conditions)
-    if (bc.time.kind() != TimeFunction::Kind::step) return bc.time.factor(t);
-  return t > 0.0 ? 1.0 : 0.0;
-}
-
 PetscErrorCode Problem::setup(DM dm, const Scene &scene)
 {
   MPI_Comm comm;
@@ -370,41 +323,7 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
       },
       [this](const double x[]) { return initialPressure(x); }));
 
-  // Faces carrying tractions or fluxes: integrated once, by the rank that owns the face.
-  PetscSF sf;
-  PetscInt nleaves;
-  const PetscInt *leaves;
-  PetscCall(DMGetPointSF(dm, &sf));
-  PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
-  PetscInt pStart, pEnd;
-  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  std::vector<char> ghost(pEnd - pStart, 0);
-  for (PetscInt i = 0; i < (nleaves > 0 ? nleaves : 0); ++i)
-    ghost[(leaves ? leaves[i] : i) - pStart] = 1;
-  DMLabel faceSets;
-  PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
-  for (size_t i = 0; i < scene.conditions.size(); ++i) {
-    const auto &bc = scene.conditions[i];
-    if (bc.dirichlet() || !faceSets) continue;
-    IS faces = nullptr;
-    PetscCall(DMLabelGetStratumIS(faceSets, bc.tag, &faces));
-    if (!faces) continue;
-    const PetscInt *idx;
-    PetscInt n;
-    PetscCall(ISGetLocalSize(faces, &n));
-    PetscCall(ISGetIndices(faces, &idx));
-    for (PetscInt k = 0; k < n; ++k) {
-      if (ghost[idx[k] - pStart]) continue;
-      DMPolytopeType ct;
-      PetscCall(DMPlexGetCellType(dm, idx[k], &ct));
-      LoadedFace f{idx[k], (int)i, 0, {0, 0, 0}};
-      PetscCall(elementIndex(ct, &f.element));
-      faces_.push_back(f);
-    }
-    PetscCall(ISRestoreIndices(faces, &idx));
-    PetscCall(ISDestroy(&faces));
-  }
-  PetscCall(setupWaterLoad(ghost, pStart));
+  PetscCall(setupLoadedFaces());
 
   // Local offsets of constrained dofs and the condition that sets each.
   PetscSection s;
@@ -605,55 +524,7 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
   PetscCall(interfaces_.residual(local, InterfaceRates{local_rate, mode.dt}, mode.mass_scale, f));
   PetscCall(endLogEvent(events_.interface_residual));
   if (!mode.include_loads) PetscFunctionReturn(0);
-  // Natural conditions: R_u -= int t . v, R_p += s int psi q_n.
-  std::vector<double> F;
-  for (const auto &face : faces_) {
-    const bool water = face.condition == kWaterLoad;
-    const BoundaryCondition *bc = water ? nullptr : &scene_->conditions[face.condition];
-    const ReferenceElement &e = elements_[face.element];
-    const double factor = water ? 1.0 : bc->time.factor(t);
-    PetscScalar *xc = nullptr;
-    PetscInt nc = 0, n = 0;
-    PetscCall(DMPlexVecGetClosure(dm_, csec, coords, face.face, &nc, &xc));
-    PetscScalar *x = nullptr;
-    PetscCall(DMPlexVecGetClosure(dm_, s, local, face.face, &n, &x));
-    F.assign(n, 0.0);
-    const int nv = e.num_vertices, nu = nv * dim_;
-    const int np = (int)n - nu;
-    for (int q = 0; q < e.num_quadrature; ++q) {
-      const double *phi = &e.basis[q * nv];
-      double w = surfaceWeight(e, xc, dim_, q);
-      if (scene_->axisymmetric) {
-        double r = 0.0;
-        for (int a = 0; a < nv; ++a)
-          r += phi[a] * xc[a * dim_];
-        w *= 2.0 * M_PI * r;
-      }
-      if (water) {
-        // The free water's pressure, t = -p_w n where the face is below the water level: a
-        // permanent load like gravity (no time function), balanced by the geostatic state.
-        double xq[3] = {0, 0, 0};
-        for (int a = 0; a < nv; ++a)
-          for (int d = 0; d < dim_; ++d)
-            xq[d] += phi[a] * xc[a * dim_ + d];
-        const double pw = std::max(0.0, initialPressure(xq));
-        for (int a = 0; a < nv; ++a)
-          for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] += w * phi[a] * pw * face.normal[i];
-        continue;
-      }
-      for (int a = 0; a < nv; ++a) {
-        if (bc->kind == BcKind::traction)
-          for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] -= w * phi[a] * bc->value[i] * factor;
-        else if (bc->kind == BcKind::flux && np == nv)
-          F[nu + a] += mode.mass_scale * w * phi[a] * bc->value[0] * factor;
-      }
-    }
-    PetscCall(DMPlexVecRestoreClosure(dm_, s, local, face.face, &n, &x));
-    PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, face.face, &nc, &xc));
-    PetscCall(DMPlexVecSetClosure(dm_, s, f, face.face, F.data(), ADD_ALL_VALUES));
-  }
+  PetscCall(addLoads(t, mode.mass_scale, f, nullptr));
   PetscFunctionReturn(0);
 }
 

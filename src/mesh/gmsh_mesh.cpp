@@ -7,15 +7,22 @@
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene_options.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <petscsf.h>
 #include <sstream>
 #include <sys/stat.h>
 
 namespace poroseam {
+namespace {
+/// Name of the IS composed with a distributed DM: the serial point number of every point.
+constexpr const char *kSerialPointNumbers = "poroseam_serial_point_numbers";
+} // namespace
+
 namespace {
 
 bool fileExists(const std::string &path)
@@ -204,11 +211,43 @@ PetscErrorCode distributeMesh(DM *dm)
                              kSceneDoc, report, &report, nullptr));
   PetscOptionsEnd();
   PetscCall(configurePartitioner(*dm, kind));
-  PetscCall(DMPlexDistribute(*dm, 0, nullptr, &dist));
+  PetscSF migration = nullptr;
+  PetscCall(DMPlexDistribute(*dm, 0, &migration, &dist));
   if (dist) {
+    // Every point of the distributed mesh came from a point of the serial one (the migration
+    // SF's root): that point's number, counted over the ranks that held the serial mesh, is
+    // the point's partition-independent number (serialPointNumbers).
+    PetscInt serialStart, serialEnd, pStart, pEnd, nleaves;
+    const PetscInt *ilocal;
+    const PetscSFNode *iremote;
+    PetscMPIInt ranks;
+    PetscCall(DMPlexGetChart(*dm, &serialStart, &serialEnd));
+    PetscCallMPI(MPI_Comm_size(comm, &ranks));
+    PetscInt held = serialEnd - serialStart;
+    std::vector<PetscInt> first(ranks + 1, 0);
+    PetscCallMPI(MPI_Allgather(&held, 1, MPIU_INT, first.data() + 1, 1, MPIU_INT, comm));
+    for (PetscMPIInt r = 0; r < ranks; ++r)
+      first[r + 1] += first[r];
+    PetscCall(DMPlexGetChart(dist, &pStart, &pEnd));
+    PetscCall(PetscSFGetGraph(migration, nullptr, &nleaves, &ilocal, &iremote));
+    std::vector<PetscInt> number(pEnd - pStart, -1);
+    for (PetscInt i = 0; i < nleaves; ++i) {
+      const PetscInt p = ilocal ? ilocal[i] : i;
+      if (p >= pStart && p < pEnd) number[p - pStart] = first[iremote[i].rank] + iremote[i].index;
+    }
+    int missing = std::count(number.begin(), number.end(), -1) > 0, any = 0;
+    PetscCallMPI(MPI_Allreduce(&missing, &any, 1, MPI_INT, MPI_MAX, comm));
+    PetscCheck(!any, comm, PETSC_ERR_PLIB,
+               "distributeMesh: a point of the distributed mesh has no serial point");
+    IS is;
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)number.size(), number.data(),
+                              PETSC_COPY_VALUES, &is));
+    PetscCall(PetscObjectCompose((PetscObject)dist, kSerialPointNumbers, (PetscObject)is));
+    PetscCall(ISDestroy(&is));
     PetscCall(DMDestroy(dm));
     *dm = dist;
   }
+  PetscCall(PetscSFDestroy(&migration));
   if (report) { // cells per rank and cohesive cells apart from a bulk neighbour
     PetscInt cStart, cEnd, separated, total;
     PetscCall(DMPlexGetHeightStratum(*dm, 0, &cStart, &cEnd));
@@ -225,6 +264,31 @@ PetscErrorCode distributeMesh(DM *dm)
          << total << '\n';
     PetscCall(PetscPrintf(comm, "%s", line.str().c_str()));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode serialPointNumbers(DM dm, std::vector<PetscInt> &number)
+{
+  PetscInt pStart, pEnd;
+  IS is = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  number.resize(pEnd - pStart);
+  PetscCall(PetscObjectQuery((PetscObject)dm, kSerialPointNumbers, (PetscObject *)&is));
+  if (!is) { // not distributed (one rank): the points are the serial mesh's
+    for (PetscInt p = pStart; p < pEnd; ++p)
+      number[p - pStart] = p;
+    PetscFunctionReturn(0);
+  }
+  PetscInt n;
+  const PetscInt *idx;
+  PetscCall(ISGetLocalSize(is, &n));
+  PetscCheck(n == pEnd - pStart, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "serialPointNumbers: %" PetscInt_FMT " numbers for %" PetscInt_FMT " points", n,
+             pEnd - pStart);
+  PetscCall(ISGetIndices(is, &idx));
+  std::copy(idx, idx + n, number.begin());
+  PetscCall(ISRestoreIndices(is, &idx));
   PetscFunctionReturn(0);
 }
 

@@ -1,7 +1,8 @@
 // Bulk field output: HDF5 (through PETSc's HDF5 viewer) plus an XDMF index for ParaView.
 //
-// HDF5 layout of <dir>/<basename>.h5 (global vertex numbering: owned vertices of rank 0 first,
-// then rank 1, ...; the same order in the geometry and in every field; cells likewise):
+// HDF5 layout of <dir>/<basename>.h5 (vertices and cells in the order of their point numbers
+// in the serial mesh, serialPointNumbers: the same files on any number of ranks and any
+// partition; the same order in the geometry and in every field):
 //   /geometry/vertices              [Nv, cdim]  double   vertex coordinates
 //   /topology/cells                 [Nc, nc]    PetscInt connectivity (0-based, XDMF order)
 //   /fields/displacement/<step>     [Nv, 3]     double   (padded with zeros when dim < 3)
@@ -16,7 +17,10 @@
 // renamed), so a crashed run still leaves a readable time series.
 #include "poroseam/field_writer.hpp"
 
+#include "output_order.hpp"
 #include "xdmf.hpp"
+
+#include "poroseam/mesh.hpp"
 
 #include <petscdmplex.h>
 #include <petscsf.h>
@@ -112,6 +116,7 @@ struct FieldWriter::Impl {
   PetscInt dispComp = 0;
   std::vector<PetscInt> ownedVertices; // local vertex points, in global output order
   std::vector<PetscInt> ownedCells;    // local cell points, in global output order
+  OutputOrder vertexOrder, cellOrder;  // from this rank's order to the files' (output_order.hpp)
   std::vector<double> times;
   bool regions = false;             // /cell_fields/region written
   std::vector<CellField> cellNames; // name, units, components, integer of the cell fields
@@ -135,8 +140,10 @@ PetscErrorCode FieldWriter::Impl::writeVertexVec(const char *group, const std::s
   PetscFunctionBeginUser;
   PetscCheck(static_cast<PetscInt>(values.size()) == n, comm, PETSC_ERR_PLIB,
              "FieldWriter: wrong number of values for %s", name.c_str());
+  std::vector<PetscScalar> rows(values);
+  PetscCall(vertexOrder.permute(rows, bs));
   PetscCall(
-      xdmf::writeReals(viewer, comm, group, name, bs, values, units, withTime ? &time : nullptr));
+      xdmf::writeReals(viewer, comm, group, name, bs, rows, units, withTime ? &time : nullptr));
   PetscFunctionReturn(0);
 }
 
@@ -327,20 +334,27 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
         owned[ilocal ? ilocal[l] : l] = 0;
   }
 
-  // Global vertex numbers: owned vertices numbered contiguously per rank, ghosts via the SF.
+  // Global vertex numbers: the position of each vertex in the files, by its serial point number
+  // (owned vertices; ghosts get theirs via the SF).
   PetscCall(DMPlexGetDepthStratum(im.dm, 0, &vStart, &vEnd));
+  std::vector<PetscInt> serial;
+  PetscCall(serialPointNumbers(im.dm, serial));
   std::vector<PetscInt> gnum(pEnd, -1);
-  PetscInt nOwned = 0, vOffset = 0;
+  PetscInt nOwned = 0;
+  std::vector<PetscInt> keys;
   for (PetscInt v = vStart; v < vEnd; ++v)
-    if (owned[v]) ++nOwned;
-  PetscCallMPI(MPI_Exscan(&nOwned, &vOffset, 1, MPIU_INT, MPI_SUM, comm));
-  if (rank == 0) vOffset = 0;
+    if (owned[v]) {
+      ++nOwned;
+      im.ownedVertices.push_back(v);
+      keys.push_back(serial[v]);
+    }
   PetscCall(MPIU_Allreduce(&nOwned, &im.numVertices, 1, MPIU_INT, MPI_SUM, comm));
-  im.ownedVertices.reserve(nOwned);
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    if (!owned[v]) continue;
-    gnum[v] = vOffset + static_cast<PetscInt>(im.ownedVertices.size());
-    im.ownedVertices.push_back(v);
+  {
+    std::vector<PetscInt> position;
+    PetscCall(positionsByKey(comm, keys, std::vector<PetscInt>(keys.size(), 1), position));
+    for (size_t i = 0; i < im.ownedVertices.size(); ++i)
+      gnum[im.ownedVertices[i]] = position[i];
+    PetscCall(im.vertexOrder.setup(comm, position));
   }
   {
     std::vector<PetscInt> leafNum(gnum);
@@ -403,6 +417,14 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
     ++nCellsLocal;
   }
   PetscCall(MPIU_Allreduce(&nCellsLocal, &im.numCells, 1, MPIU_INT, MPI_SUM, comm));
+  {
+    std::vector<PetscInt> cellKeys, position;
+    for (PetscInt c : im.ownedCells)
+      cellKeys.push_back(serial[c]);
+    PetscCall(positionsByKey(comm, cellKeys, std::vector<PetscInt>(cellKeys.size(), 1), position));
+    PetscCall(im.cellOrder.setup(comm, position));
+  }
+  PetscCall(im.cellOrder.permute(cells, im.corners));
 
   // Coordinates of the owned vertices.
   std::vector<PetscScalar> xyz(im.ownedVertices.size() * im.cdim, 0.0);
@@ -516,6 +538,7 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
         for (size_t k : index)
           for (size_t j = 0; j < nc; ++j)
             v.push_back(static_cast<PetscInt>(f.values[k * nc + j]));
+        PetscCall(im.cellOrder.permute(v, f.components));
         PetscCall(xdmf::writeInts(im.viewer, im.comm, group, step, f.components, v, f.units.c_str(),
                                   &time));
       } else {
@@ -524,6 +547,7 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
         for (size_t k : index)
           for (size_t j = 0; j < nc; ++j)
             v.push_back(f.values[k * nc + j]);
+        PetscCall(im.cellOrder.permute(v, f.components));
         PetscCall(xdmf::writeReals(im.viewer, im.comm, group, step, f.components, v,
                                    f.units.c_str(), &time));
       }
@@ -566,6 +590,7 @@ PetscErrorCode FieldWriter::writeRegions(const std::vector<PetscInt> &cells,
   ids.reserve(index.size());
   for (size_t k : index)
     ids.push_back(region[k]);
+  PetscCall(im.cellOrder.permute(ids, 1));
   std::string list;
   for (size_t r = 0; r < names.size(); ++r)
     list += (r ? "," : "") + names[r];
@@ -584,6 +609,8 @@ PetscErrorCode FieldWriter::close()
   PetscCall(PetscViewerDestroy(&impl_->viewer));
   PetscCall(impl_->writeXdmf());
   PetscCall(DMDestroy(&impl_->dm));
+  PetscCall(impl_->vertexOrder.destroy());
+  PetscCall(impl_->cellOrder.destroy());
   PetscFunctionReturn(0);
 }
 

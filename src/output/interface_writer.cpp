@@ -2,8 +2,10 @@
 //
 // HDF5 layout of <dir>/interfaces.h5. Nc cells (one per cohesive cell: its side-1 face), Nn
 // cell nodes (every cell has its own copies, cell after cell), Np integration points; all in
-// rank order, then InterfaceAssembly::visit order. d = mesh dimension, t = d - 1 tangent
-// components. Integers are PetscInt.
+// the order of the cohesive cells' point numbers in the serial mesh (serialPointNumbers: the
+// same files on any number of ranks and any partition), a cell's nodes and points in the
+// order InterfaceAssembly::visit gives them. d = mesh dimension, t = d - 1 tangent components.
+// Integers are PetscInt.
 //   /cells/geometry                  [Nn, d]  double  face vertex coordinates
 //   /cells/topology                  [Nc, n]  int     node indices (n = 2, 3 or 4; face closure
 //                                                     order, the XDMF/VTK order), or [L, 1] in
@@ -51,7 +53,10 @@
 #include "poroseam/interface_writer.hpp"
 
 #include "interface_records.hpp"
+#include "output_order.hpp"
 #include "xdmf.hpp"
+
+#include "poroseam/mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -91,9 +96,13 @@ struct InterfaceWriter::Impl {
   PetscInt min_nodes = 0, max_nodes = 0, mixed_length = 0;
   std::vector<PetscInt> local_cells;  // cohesive cell of each local output cell (for checks)
   std::vector<int> local_point_count; // integration points of each local output cell
+  /// From this rank's order to the files' (output_order.hpp): cells, their nodes, points.
+  OutputOrder cell_order, node_order, point_order;
 
+  /// `serial`: serialPointNumbers of the mesh, the key of each cohesive cell's place.
   PetscErrorCode writeMesh(const std::vector<CellRecord> &cells,
-                           const std::vector<PointRecord> &points);
+                           const std::vector<PointRecord> &points,
+                           const std::vector<PetscInt> &serial);
   PetscErrorCode writeValues(const std::string &grid, const std::vector<Values> &values,
                              size_t step, double time);
   /// displacement_minus / _plus at the nodes of the cell grid.
@@ -142,7 +151,8 @@ int InterfaceWriter::Impl::part(int iface, int surface) const
 }
 
 PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &cells,
-                                                const std::vector<PointRecord> &points)
+                                                const std::vector<PointRecord> &points,
+                                                const std::vector<PetscInt> &serial)
 {
   const PetscInt nc = static_cast<PetscInt>(cells.size());
   const PetscInt np = static_cast<PetscInt>(points.size());
@@ -154,11 +164,7 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
     lmin = PetscMin(lmin, (PetscInt)c.nodes);
     lmax = PetscMax(lmax, (PetscInt)c.nodes);
   }
-  PetscInt local[3] = {nc, nn, np}, offset[3] = {0, 0, 0}, total[3];
-  PetscCallMPI(MPI_Exscan(local, offset, 3, MPIU_INT, MPI_SUM, comm));
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) offset[0] = offset[1] = offset[2] = 0;
+  PetscInt local[3] = {nc, nn, np}, total[3];
   PetscCall(MPIU_Allreduce(local, total, 3, MPIU_INT, MPI_SUM, comm));
   {
     PetscInt in[2] = {-lmin, lmax}, out[2];
@@ -177,6 +183,22 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
     local_point_count.push_back(static_cast<int>(c.count));
   }
   if (num_cells == 0) PetscFunctionReturn(0); // nothing to write (kept as an empty index)
+  // Where each cell, node and point goes in the files: cells by their serial point number, a
+  // cell's nodes and points after those of the cells before it.
+  std::vector<PetscInt> keys, ones(cells.size(), 1), nodes, counts, mixed_lengths;
+  std::vector<PetscInt> cell_at, node_at, point_at, mixed_at;
+  for (const CellRecord &c : cells) {
+    keys.push_back(serial[c.cell]);
+    nodes.push_back(c.nodes);
+    counts.push_back((PetscInt)c.count);
+    mixed_lengths.push_back(c.nodes + 1); // XDMF Mixed: the cell type, then its nodes
+  }
+  PetscCall(positionsByKey(comm, keys, ones, cell_at));
+  PetscCall(positionsByKey(comm, keys, nodes, node_at));
+  PetscCall(positionsByKey(comm, keys, counts, point_at));
+  PetscCall(cell_order.setup(comm, cell_at));
+  PetscCall(node_order.setup(comm, node_at));
+  PetscCall(point_order.setup(comm, point_at));
   PetscCheck(dim == 3 || (min_nodes == 2 && max_nodes == 2), comm, PETSC_ERR_PLIB,
              "%s: 2D interface faces must be segments", kWho);
 
@@ -184,7 +206,7 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
   std::vector<PetscScalar> xyz, area, normal;
   std::vector<PetscInt> topo, npc, iface, surface, part;
   const bool mixed = min_nodes != max_nodes;
-  PetscInt node = offset[1], mixed_local = 0;
+  PetscInt node = 0, mixed_local = 0;
   for (const CellRecord &c : cells) {
     xyz.insert(xyz.end(), c.coords.begin(), c.coords.end());
     if (mixed) {
@@ -192,7 +214,7 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
       ++mixed_local;
     }
     for (int k = 0; k < c.nodes; ++k)
-      topo.push_back(node++);
+      topo.push_back(node_at[node++]);
     mixed_local += c.nodes;
     npc.push_back(c.nodes);
     iface.push_back(c.iface);
@@ -207,6 +229,19 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
   }
   PetscCall(MPIU_Allreduce(&mixed_local, &mixed_length, 1, MPIU_INT, MPI_SUM, comm));
   if (!mixed) mixed_length = 0;
+  if (mixed) {
+    OutputOrder mixed_order;
+    PetscCall(positionsByKey(comm, keys, mixed_lengths, mixed_at));
+    PetscCall(mixed_order.setup(comm, mixed_at));
+    PetscCall(mixed_order.permute(topo, 1));
+  } else {
+    PetscCall(cell_order.permute(topo, max_nodes));
+  }
+  PetscCall(node_order.permute(xyz, dim));
+  for (std::vector<PetscInt> *v : {&npc, &iface, &surface, &part})
+    PetscCall(cell_order.permute(*v, 1));
+  PetscCall(cell_order.permute(area, 1));
+  PetscCall(cell_order.permute(normal, 3));
   PetscCall(
       xdmf::writeReals(viewer, comm, "/cells", "geometry", dim, xyz, units("geometry"), nullptr));
   PetscCall(xdmf::writeInts(viewer, comm, "/cells", "topology", mixed ? 1 : max_nodes, topo, "1"));
@@ -226,17 +261,22 @@ PetscErrorCode InterfaceWriter::Impl::writeMesh(const std::vector<CellRecord> &c
       const PointRecord &p = points[i];
       for (int d = 0; d < dim; ++d)
         px.push_back(p.x[d]);
-      ptopo.push_back(offset[2] + static_cast<PetscInt>(i));
+      ptopo.push_back(point_at[i]);
       piface.push_back(p.iface);
       psurface.push_back(p.surface);
       ppart.push_back(this->part(p.iface, p.surface));
-      pcell.push_back(offset[0] + static_cast<PetscInt>(ci));
+      pcell.push_back(cell_at[ci]);
       ppoint.push_back(p.point);
       weight.push_back(p.weight);
       for (int d = 0; d < 3; ++d)
         pnormal.push_back(p.normal[d]);
     }
   }
+  PetscCall(point_order.permute(px, dim));
+  for (std::vector<PetscInt> *v : {&ptopo, &piface, &psurface, &ppart, &pcell, &ppoint})
+    PetscCall(point_order.permute(*v, 1));
+  PetscCall(point_order.permute(weight, 1));
+  PetscCall(point_order.permute(pnormal, 3));
   PetscCall(
       xdmf::writeReals(viewer, comm, "/points", "geometry", dim, px, units("geometry"), nullptr));
   PetscCall(xdmf::writeInts(viewer, comm, "/points", "topology", 1, ptopo, "1"));
@@ -277,8 +317,13 @@ PetscErrorCode InterfaceWriter::Impl::writeValues(const std::string &grid,
       a.insert(a.end(), get(v), get(v) + n);
     return a;
   };
-  auto real = [&](const char *name, int bs, const std::vector<PetscScalar> &v) {
-    return xdmf::writeReals(viewer, comm, base + name, s, bs, v, units(name), &time);
+  const OutputOrder &order = grid == "cells" ? cell_order : point_order;
+  auto real = [&](const char *name, int bs, const std::vector<PetscScalar> &v) -> PetscErrorCode {
+    std::vector<PetscScalar> rows(v);
+    PetscFunctionBeginUser;
+    PetscCall(order.permute(rows, bs));
+    PetscCall(xdmf::writeReals(viewer, comm, base + name, s, bs, rows, units(name), &time));
+    PetscFunctionReturn(0);
   };
 
   PetscFunctionBeginUser;
@@ -298,6 +343,7 @@ PetscErrorCode InterfaceWriter::Impl::writeValues(const std::string &grid,
   std::vector<PetscInt> state;
   for (const Values &v : values)
     state.push_back(v.state);
+  PetscCall(order.permute(state, 1));
   PetscCall(xdmf::writeInts(viewer, comm, base + "state", s, 1, state, units("state"), &time));
   if (flow) {
     PetscCall(real("interface_pressure", 1, scalar(&Values::p3)));
@@ -327,6 +373,8 @@ PetscErrorCode InterfaceWriter::Impl::writeNodeDisplacements(const std::vector<C
     minus.insert(minus.end(), c.displacement_minus.begin(), c.displacement_minus.end());
     plus.insert(plus.end(), c.displacement_plus.begin(), c.displacement_plus.end());
   }
+  PetscCall(node_order.permute(minus, 3));
+  PetscCall(node_order.permute(plus, 3));
   PetscCall(xdmf::writeReals(viewer, comm, "/cells/fields/displacement_minus", s, 3, minus,
                              units("displacement_minus"), &time));
   PetscCall(xdmf::writeReals(viewer, comm, "/cells/fields/displacement_plus", s, 3, plus,
@@ -508,7 +556,13 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
   std::vector<PointRecord> points;
   PetscCall(interface_output::collect(mech, im.dim, local_solution, rates, cells, points));
   if (!im.mesh_written) {
-    PetscCall(im.writeMesh(cells, points));
+    DM dm;
+    std::vector<PetscInt> serial;
+    PetscCall(VecGetDM(local_solution, &dm));
+    PetscCheck(dm, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "InterfaceWriter::write: the solution vector has no DM");
+    PetscCall(serialPointNumbers(dm, serial));
+    PetscCall(im.writeMesh(cells, points, serial));
   } else {
     int same = cells.size() == im.local_cells.size(), all;
     for (size_t i = 0; same && i < cells.size(); ++i)
@@ -543,6 +597,8 @@ PetscErrorCode InterfaceWriter::close()
   PetscCall(PetscViewerDestroy(&impl_->viewer));
   // A resumed writer that wrote nothing does not know the mesh: keep the existing index.
   if (impl_->mesh_written || impl_->times.empty()) PetscCall(impl_->writeXdmf());
+  for (OutputOrder *o : {&impl_->cell_order, &impl_->node_order, &impl_->point_order})
+    PetscCall(o->destroy());
   PetscFunctionReturn(0);
 }
 

@@ -23,11 +23,13 @@
 namespace poroseam {
 namespace simulation_detail {
 
-/// Per-boundary offsets of the local vector entries summed into force and flux resultants.
+/// Per boundary, the local offsets of the prescribed unknowns whose reactions and outflows it
+/// reports: each prescribed unknown once, for the first boundary in -boundaries order that
+/// prescribes it (docs/outputs.md, "Forces and flows through boundaries").
 struct BoundaryDofs {
-  std::vector<PetscInt> displacement;       ///< first displacement dof of each vertex
-  std::vector<PetscInt> pressure;           ///< pressure dof of each vertex that has one
-  std::vector<PetscInt> interface_pressure; ///< prescribed p3 dofs of interfaces ending here
+  std::vector<PetscInt> displacement[3];    ///< per component
+  std::vector<PetscInt> pressure;           ///< pore pressure
+  std::vector<PetscInt> interface_pressure; ///< p3 of interfaces ending here
 };
 
 struct Run {

@@ -13,49 +13,77 @@ namespace simulation_detail {
 
 PetscErrorCode collectBoundaryDofs(Run &run)
 {
+  const Scene &scene = run.scene;
+  const int dim = scene.dim, nb = (int)scene.boundaries.size();
   PetscSection s;
-  PetscInt numFields, vStart, vEnd;
+  PetscInt numFields, storage;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(run.dm, &s));
   PetscCall(PetscSectionGetNumFields(s, &numFields));
-  PetscCall(DMPlexGetDepthStratum(run.dm, 0, &vStart, &vEnd));
-  run.boundary_dofs.assign(run.scene.boundaries.size(), BoundaryDofs());
-  for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
-    DMLabel label;
-    PetscCall(DMGetLabel(run.dm, boundaryLabelName(run.scene.boundaries[b].name).c_str(), &label));
-    IS points = nullptr;
-    PetscCall(DMLabelGetStratumIS(label, 1, &points));
-    if (!points) continue;
-    const PetscInt *idx;
-    PetscInt n;
-    PetscCall(ISGetLocalSize(points, &n));
-    PetscCall(ISGetIndices(points, &idx));
-    for (PetscInt i = 0; i < n; ++i) {
-      const PetscInt v = idx[i];
-      if (v < vStart || v >= vEnd) continue;
-      PetscInt off, dof = 0;
-      PetscCall(PetscSectionGetFieldOffset(s, v, kDisplacementField, &off));
-      run.boundary_dofs[b].displacement.push_back(off);
-      if (numFields > kPressureField)
-        PetscCall(PetscSectionGetFieldDof(s, v, kPressureField, &dof));
-      if (dof) {
-        PetscCall(PetscSectionGetFieldOffset(s, v, kPressureField, &off));
-        run.boundary_dofs[b].pressure.push_back(off);
-      }
-    }
-    PetscCall(ISRestoreIndices(points, &idx));
-    PetscCall(ISDestroy(&points));
+  PetscCall(PetscSectionGetStorageSize(s, &storage));
+  // What each boundary prescribes: bit c < dim the displacement component c, bit dim the pore
+  // pressure, bit dim + 1 the interface pressure.
+  std::vector<unsigned> prescribes(nb, 0u);
+  for (const auto &bc : scene.conditions) {
+    if (!bc.dirichlet()) continue;
+    const unsigned bit = bc.kind == BcKind::displacement ? 1u << bc.component
+                         : bc.kind == BcKind::pressure   ? 1u << dim
+                                                         : 1u << (dim + 1);
+    for (int b = 0; b < nb; ++b)
+      if (scene.boundaries[b].name == bc.boundary) prescribes[b] |= bit;
   }
-  // Prescribed interface pressures per boundary (the rule of the section constraints)...
-  for (size_t b = 0; b < run.scene.boundaries.size(); ++b) {
+  // Every constrained unknown of the section on a boundary that prescribes it goes to the first
+  // such boundary: a corner where two boundaries fix ux is counted once, and a corner of the
+  // prescribed top pressure is not counted for the impervious side. The unknowns are those of
+  // every point of the boundary (its closure), not only of its vertices.
+  std::vector<char> taken(storage, 0);
+  run.boundary_dofs.assign(nb, BoundaryDofs());
+  for (int b = 0; b < nb; ++b) {
+    if (!prescribes[b]) continue;
+    DMLabel label;
+    PetscCall(DMGetLabel(run.dm, boundaryLabelName(scene.boundaries[b].name).c_str(), &label));
+    IS points = nullptr;
+    if (label) PetscCall(DMLabelGetStratumIS(label, 1, &points));
+    if (points) {
+      const PetscInt *idx;
+      PetscInt n;
+      PetscCall(ISGetLocalSize(points, &n));
+      PetscCall(ISGetIndices(points, &idx));
+      for (PetscInt i = 0; i < n; ++i)
+        for (PetscInt f : {(PetscInt)kDisplacementField, (PetscInt)kPressureField}) {
+          PetscInt cdof = 0, components, off;
+          const PetscInt *constrained;
+          if (f >= numFields) continue;
+          PetscCall(PetscSectionGetFieldConstraintDof(s, idx[i], f, &cdof));
+          if (!cdof) continue;
+          PetscCall(PetscSectionGetFieldComponents(s, f, &components));
+          PetscCall(PetscSectionGetFieldConstraintIndices(s, idx[i], f, &constrained));
+          PetscCall(PetscSectionGetFieldOffset(s, idx[i], f, &off));
+          for (PetscInt k = 0; k < cdof; ++k) {
+            const PetscInt c = constrained[k] % components, o = off + constrained[k];
+            const unsigned bit = f == kDisplacementField ? 1u << c : 1u << dim;
+            if (!(prescribes[b] & bit) || taken[o]) continue;
+            taken[o] = 1;
+            if (f == kDisplacementField)
+              run.boundary_dofs[b].displacement[c].push_back(o);
+            else
+              run.boundary_dofs[b].pressure.push_back(o);
+          }
+        }
+      PetscCall(ISRestoreIndices(points, &idx));
+      PetscCall(ISDestroy(&points));
+    }
+    // Prescribed interface pressures (the rule of the section constraints).
+    if (!(prescribes[b] & (1u << (dim + 1))) || numFields <= kInterfacePressureField) continue;
     std::vector<PetscInt> edges;
-    PetscCall(lateralEdgesOnBoundary(run.dm, run.scene.boundaries[b].name, edges));
+    PetscCall(lateralEdgesOnBoundary(run.dm, scene.boundaries[b].name, edges));
     for (PetscInt e : edges) {
       PetscInt cdof = 0, off;
-      if (numFields > kInterfacePressureField)
-        PetscCall(PetscSectionGetFieldConstraintDof(s, e, kInterfacePressureField, &cdof));
+      PetscCall(PetscSectionGetFieldConstraintDof(s, e, kInterfacePressureField, &cdof));
       if (!cdof) continue;
       PetscCall(PetscSectionGetFieldOffset(s, e, kInterfacePressureField, &off));
+      if (taken[off]) continue;
+      taken[off] = 1;
       run.boundary_dofs[b].interface_pressure.push_back(off);
     }
   }
@@ -89,10 +117,12 @@ PetscErrorCode collectBoundaryDofs(Run &run)
   PetscFunctionReturn(0);
 }
 
-/// Per boundary: force [N], water outflow from the bulk [m3/s] and, with interface flow,
-/// water leaving along interfaces that end there [m3/s]; then the longitudinal outflow
-/// [m3/s] of every interface (0 without flow or prescribed ends). From the residual without
-/// loads.
+/// Per boundary: force on the body [N], water outflow from the bulk [m3/s] and, with
+/// interface flow, water leaving along interfaces that end there [m3/s]; then the longitudinal
+/// outflow [m3/s] of every interface (0 without flow or prescribed ends). A boundary's force
+/// is the reaction at the prescribed unknowns it answers for (collectBoundaryDofs) plus the
+/// load applied on it; likewise its outflow. The reaction of a prescribed unknown is the
+/// residual there with the loads: what the support adds to the loads that reach it.
 PetscErrorCode boundaryResultants(Run &run, double t, double dt, Vec local, Vec rate,
                                   std::vector<double> &out)
 {
@@ -100,20 +130,25 @@ PetscErrorCode boundaryResultants(Run &run, double t, double dt, Vec local, Vec 
   Vec f;
   const PetscScalar *r;
   MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
+  std::vector<double> loads;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalVector(run.dm, &f));
   PetscCall(run.problem.residual(t, local, rate, ResidualMode{1.0, false, dt}, f));
+  PetscCall(run.problem.addLoads(t, 1.0, f, &loads));
   PetscCall(VecGetArrayRead(f, &r));
   std::vector<double> mine(run.boundary_dofs.size() * per, 0.0);
   for (size_t b = 0; b < run.boundary_dofs.size(); ++b) {
-    // Each rank holds only its own cells' contributions, so the sum over ranks counts each once.
-    for (PetscInt off : run.boundary_dofs[b].displacement)
-      for (int d = 0; d < dim; ++d)
-        mine[b * per + d] += r[off + d];
+    // Each rank holds only its own cells' and faces' contributions (ghost entries included), so
+    // the sum over ranks counts each once.
+    for (int d = 0; d < dim; ++d)
+      for (PetscInt off : run.boundary_dofs[b].displacement[d])
+        mine[b * per + d] += r[off];
     for (PetscInt off : run.boundary_dofs[b].pressure)
       mine[b * per + dim] -= r[off];
     for (PetscInt off : run.boundary_dofs[b].interface_pressure)
       mine[b * per + dim + 1] -= r[off];
+    for (int k = 0; k <= dim; ++k)
+      mine[b * per + k] += loads[b * (dim + 1) + k];
   }
   // Longitudinal outflow of each interface through its ends with prescribed p3.
   for (const auto &dofs : run.interface_end_dofs) {

@@ -105,9 +105,10 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   PetscFunctionReturn(0);
 }
 
-/// One row of timeseries.csv and, every output_every steps, the fields.
+/// One row of timeseries.csv and, every output_every steps and at the `last` step of the run,
+/// the fields.
 PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
-                          PetscInt ksp, PetscInt rejected, double wall)
+                          PetscInt ksp, PetscInt rejected, double wall, bool last = false)
 {
   std::vector<double> resultants, probes, interface;
   PetscFunctionBeginUser;
@@ -119,7 +120,9 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
                    StepRow{run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)ksp,
                            (int)rejected, wall},
                    resultants, interface, probes);
-  if (run.scene.output_every > 0 && run.step % run.scene.output_every == 0) {
+  // The final state always: after cut-backs the step count need not be a multiple of
+  // output_every (a run to 3000 s ended with its last field at 2920 s).
+  if (run.scene.output_every > 0 && (run.step % run.scene.output_every == 0 || last)) {
     CellFields cells;
     PetscCall(run.problem.cellFields(local, cells));
     PetscCall(run.fields.write(t, local, run.initial, &cells));
@@ -176,6 +179,8 @@ PetscErrorCode postStep(TS ts)
   ++run.step;
   double t, t_previous;
   PetscCall(TSGetTime(ts, &t));
+  PetscCall(settleOnFinalTime(ts, &t)); // the last step ends on -ts_max_time exactly
+  PetscCall(TSGetConvergedReason(ts, &reason));
   PetscCall(TSGetPrevTime(ts, &t_previous));
   const double dt = t - t_previous; // the step just taken (after any cut-back)
   Vec X, local, rate;
@@ -211,7 +216,9 @@ PetscErrorCode postStep(TS ts)
   const PetscInt rejected = rejects - run.last_rejects;
   run.last_snes_its = snes_its, run.last_ksp_its = ksp_its, run.last_rejects = rejects;
   const double wall = MPI_Wtime() - run.step_start;
-  PetscCall(recordStep(run, t, dt, local, rate, newton, krylov, rejected, wall));
+  // The run's last step: it reached the final time or the step limit (TS has said so).
+  const bool last = reason != TS_CONVERGED_ITERATING;
+  PetscCall(recordStep(run, t, dt, local, rate, newton, krylov, rejected, wall, last));
   // A checkpoint after this step: every checkpoint_every steps, and when a signal asks the
   // run to stop (unless this was the last step anyway).
   int signal = 0;
@@ -409,6 +416,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   TSAdapt adapt;
   PetscCall(TSGetAdapt(run.ts, &adapt));
   PetscCall(TSAdaptSetScaleSolveFailed(adapt, 0.5));
+  PetscCall(TSSetPreStep(run.ts, landOnFinalTime));
   PetscCall(TSSetPostStep(run.ts, postStep));
   SNES snes;
   PetscCall(TSGetSNES(run.ts, &snes));

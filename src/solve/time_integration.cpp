@@ -34,6 +34,36 @@ void lagrangeDerivativeWeights(int n, const double T[], double w[])
 
 } // namespace
 
+PetscErrorCode landOnFinalTime(TS ts)
+{
+  PetscReal t, dt, t_end;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetTime(ts, &t));
+  PetscCall(TSGetTimeStep(ts, &dt));
+  PetscCall(TSGetMaxTime(ts, &t_end));
+  const double left = t_end - t;
+  // Steps of dt add up to a time a few ulps short of a final time that is not a float multiple
+  // of dt (ten steps of 0.2 s end at 1.9999999999999998 s): PETSc then took an eleventh step of
+  // 2.2e-16 s whose rates are round-off divided by 2.2e-16 (a flux of 8.7e-6 against 3.8e-6).
+  if (left > 0.0 && left - dt <= kFinalTimeMerge * dt) PetscCall(TSSetTimeStep(ts, left));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode settleOnFinalTime(TS ts, double *t)
+{
+  PetscReal t_end;
+  TSConvergedReason reason;
+  PetscFunctionBeginUser;
+  PetscCall(TSGetMaxTime(ts, &t_end));
+  PetscCall(TSGetConvergedReason(ts, &reason));
+  if (*t == t_end || std::fabs(*t - t_end) > 8.0 * PETSC_MACHINE_EPSILON * std::fabs(t_end))
+    PetscFunctionReturn(0);
+  *t = t_end;
+  PetscCall(TSSetTime(ts, t_end));
+  if (reason == TS_CONVERGED_ITERATING) PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_TIME));
+  PetscFunctionReturn(0);
+}
+
 /// TSAdapt calls this after every converged stage, before it estimates the error: the
 /// tolerances then follow the field scales including this stage's changes.
 PetscErrorCode timeIntegrationCheckStage(TSAdapt adapt, TS, PetscReal, Vec Y, PetscBool *accept)

@@ -11,8 +11,8 @@ since row 0 (the initial state). Axisymmetric runs report the full circle, 3D ru
 Vertical equilibrium of the caisson (every step >= 1). What acts on the caisson vertically:
 the lid-top reaction R (prescribed displacement), its weight W = rho_s g V, and the interface
 (all four parts, p3 included): R = F_if + W, F_if = <interface>.F (force on the soil). Nothing
-else: lid_side is free (its column repeats the reaction of the rim vertex of lid_top, which
-must not be added twice), the axis (2D) carries ux = 0 only, the symmetry planes (3D) are
+else: lid_side is free (its column is 0: the reaction of the rim vertex is
+lid_top's), the axis (2D) carries ux = 0 only, the symmetry planes (3D) are
 rollers, and the lid is above the water level (no water pressure on lid_top or lid_side).
 Row 0 is not an equilibrium state of the caisson: the geostatic state loads the soil only, the
 row-0 lid_top reaction holds just the weight lumped on the lid-top vertices, and the caisson's
