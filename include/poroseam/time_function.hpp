@@ -18,6 +18,12 @@ public:
   static TimeFunction table(std::vector<double> times, std::vector<double> factors);
 
   double factor(double t) const;
+  /// The same factor at every time (the same kind and parameters).
+  bool operator==(const TimeFunction &o) const
+  {
+    return kind_ == o.kind_ && ramp_time_ == o.ramp_time_ && times_ == o.times_ &&
+           factors_ == o.factors_;
+  }
   Kind kind() const { return kind_; }
 
 private:
@@ -26,7 +32,12 @@ private:
   std::vector<double> times_, factors_;
 };
 
-/// Reads a two-column table "time,factor" (header line optional, '#' comments).
+/// The largest time table file read [bytes] (about a million rows).
+constexpr unsigned long long kMaxTimeTableBytes = 64ull << 20;
+
+/// Reads a two-column table "time,factor" (header line optional, '#' comments): exactly two
+/// finite numbers a row, times increasing strictly, a regular file of at most
+/// kMaxTimeTableBytes (a FIFO or a device is refused, not read: it could block forever).
 /// Returns an empty string on success, otherwise an error message naming the file and line.
 std::string readTimeTable(const std::string &path, std::vector<double> &times,
                           std::vector<double> &factors);
