@@ -14,7 +14,8 @@ public:
   static TimeFunction step();
   /// Linear from 0 at t = 0 to 1 at t = ramp_time, then held.
   static TimeFunction ramp(double ramp_time);
-  /// Piecewise linear through (time, factor) pairs, held constant beyond the last one.
+  /// Piecewise linear through (time, factor) pairs, held constant beyond the last one (and
+  /// before the first, which the scene reader requires at t <= 0, the start of a run).
   static TimeFunction table(std::vector<double> times, std::vector<double> factors);
 
   double factor(double t) const;

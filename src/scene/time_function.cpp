@@ -93,6 +93,16 @@ std::string shown(double v)
   return text;
 }
 
+/// A field as a message may quote it: a binary file's bytes become '?', and at most 24
+/// characters are shown.
+std::string quoted(const std::string &field)
+{
+  std::string s = field.substr(0, 24);
+  for (auto &ch : s)
+    if (!std::isprint((unsigned char)ch)) ch = '?';
+  return field.size() > 24 ? s + "..." : s;
+}
+
 /// A finite number written in full (no trailing text): "1e400", "nan", "inf", "1x" are not.
 bool finiteNumber(const std::string &text, double *value)
 {
@@ -144,10 +154,10 @@ std::string readTimeTable(const std::string &path, std::vector<double> &times,
       return where + std::to_string(fields.size()) + (fields.size() == 1 ? " field" : " fields") +
              ", expected two numbers 'time,factor' (a table has exactly two columns)";
     if (!finiteNumber(fields[0], &t) || !finiteNumber(fields[1], &f))
-      return where + "'" + fields[0] + "," + fields[1] +
+      return where + "'" + quoted(fields[0]) + "," + quoted(fields[1]) +
              "': expected two finite numbers 'time,factor'";
     if (!times.empty() && t <= times.back())
-      return where + "time " + fields[0] + " after " + shown(times.back()) +
+      return where + "time " + quoted(fields[0]) + " after " + shown(times.back()) +
              ": times must increase strictly";
     times.push_back(t);
     factors.push_back(f);

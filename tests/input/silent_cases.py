@@ -99,6 +99,11 @@ CASES = {
     "table_huge": dict(args=["-bc_top_traction_table", "{out}-huge.csv"],
                        sparse=("{out}-huge.csv", 65 << 20),
                        expect=["bytes, more than the 64 MiB"]),
+    # a binary file (a PNG) as a table: one line naming the line, no raw bytes in it
+    "table_binary": dict(args=TABLE, copy=("docs/fig9a_caisson_axisym.png", "table.csv"),
+                         expect=["table.csv' line 1", "expected two numbers"]),
+    "table_binary_field_quoted": dict(args=TABLE, write=("table.csv", "0,0\n1,\x01\x02\x03\n"),
+                                      expect=["table.csv' line 2", "'1,???'"]),
     # a valid table with a header, blanks and CRLF line ends still runs
     "table_valid_runs": dict(args=TABLE + SHORT, ok=True, warnings=0,
                              write=("table.csv", "time, factor\r\n0, 0\r\n# ramp\r\n1, 1\r\n"),
