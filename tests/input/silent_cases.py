@@ -14,7 +14,8 @@ sparse file of a given size (`sparse`) next to it.
 
 The classes (docs/input_errors.md, "Conditions, time tables, stabilisation, derived defaults"):
   - two conditions on one unknown of one boundary: a displacement component and a non-zero
-    traction component (the traction was dropped), a pressure and a flux;
+    traction component (the traction was dropped), a pressure and a flux, the free water's
+    load and a prescribed displacement along its normal;
   - two boundaries prescribing different values of one unknown at a shared vertex: the later
     one in -boundaries holds, with one warning line (before: silently);
   - time tables: a third column, a first time after the start of the run, NaN/inf, times not
@@ -38,6 +39,10 @@ TABLE = ["-bc_top_traction_table", "{out}/table.csv"]
 GEOSTATIC = ["-initial_state", "geostatic", "-gravity", "9.81", "-surface_elevation", "1",
              "-region_soil_rho_s", "2650", "-region_soil_porosity", "0.4"]
 
+GEOSTATIC_2D = os.path.join(SOURCE, "tests", "physics", "geostatic_2d.opts")
+WATER = ["-water_level", "3", "-water_load_boundaries", "top", "-bc_top_p", "19620",
+         "-ts_max_time", "2"]
+
 CASES = {
     # --- two conditions on one unknown of one boundary -------------------------------------
     # the example: Terzaghi's loaded top also fixed vertically
@@ -55,6 +60,13 @@ CASES = {
                                     expect=[]),
     "flux_and_pressure_top": dict(args=["-bc_top_flux", "0"],
                                   expect=["-bc_top_flux and -bc_top_p", "'top'"]),
+    # the free water's load on the sea bed (tests/physics/geostatic_2d.opts, water 2 m above
+    # the surface) competes with a prescribed normal displacement there, not a tangential one
+    "water_load_and_normal_displacement": dict(
+        scene=GEOSTATIC_2D, args=WATER + ["-bc_top_uy", "0"],
+        expect=["-water_load_boundaries names 'top', where -bc_top_uy is prescribed"]),
+    "water_load_and_tangential_displacement_runs": dict(
+        scene=GEOSTATIC_2D, args=WATER + ["-bc_top_ux", "0"], ok=True, warnings=0, expect=[]),
     # --- two boundaries, one shared vertex --------------------------------------------------
     # bottom fixes uy = 0 at (0, 0), left now prescribes 1 mm there: the later one holds
     "corner_differs_warned": dict(args=["-bc_left_uy", "0.001"] + SHORT, ok=True, warnings=1,
