@@ -41,7 +41,9 @@ std::string buildGeostaticLayers(const std::vector<GroundRegion> &regions, doubl
       msg << "ground region '" << r.name << "' reaches z = " << r.top << " above the soil surface "
           << surface
           << " (-surface_elevation): the geostatic state integrates the weight from the surface "
-             "down, so the surface must be the top of the ground";
+             "down, so the surface must be the top of the ground (a structure standing on it "
+             "takes -region_"
+          << r.name << "_ground false; porous regions are ground by default)";
       return msg.str();
     }
     z.push_back(r.bottom);

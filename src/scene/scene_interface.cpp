@@ -26,8 +26,14 @@ PetscErrorCode readInterface(PetscOptionItems *PetscOptionsObject, MPI_Comm comm
   i.tags.clear();
   for (const auto &surface : i.surfaces) {
     int tag;
-    PetscCall(findPhysical(comm, names, dim - 1, surface, (p + "surfaces").c_str(),
-                           "interface surface", &tag));
+    // Without the option, its default (the group named like the interface) is what is
+    // missing: the message names the option to set.
+    const std::string option = set ? p + "surfaces"
+                                   : "interface '" + i.name + "' (without " + p +
+                                         "surfaces, the face group named '" + i.name + "'; set " +
+                                         p + "surfaces to its groups)";
+    PetscCall(
+        findPhysical(comm, names, dim - 1, surface, option.c_str(), "interface surface", &tag));
     i.tags.push_back(tag);
   }
   PetscCall(getString(PetscOptionsObject, p + "side1",

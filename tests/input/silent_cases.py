@@ -147,6 +147,17 @@ CASES = {
                                       + GEOSTATIC + SHORT, ok=True, warnings=0, expect=[]),
     "nu_negative_no_geostatic_runs": dict(args=["-region_soil_nu", "-0.1"] + SHORT, ok=True,
                                           warnings=0, expect=[]),
+    # other defaults that the messages now name: an interface's face group (its own name),
+    # a porous region's place in the ground column
+    "interface_default_surfaces_missing": dict(
+        args=["-interfaces", "crack"],
+        expect=["interface 'crack' (without -interface_crack_surfaces, the face group named "
+                "'crack'; set -interface_crack_surfaces to its groups)", "the mesh has:"]),
+    "ground_default_above_surface": dict(
+        args=["-initial_state", "geostatic", "-gravity", "9.81", "-surface_elevation", "0.5",
+              "-region_soil_K0", "0.5"],
+        expect=["reaches z = 1 above the soil surface 0.5",
+                "takes -region_soil_ground false; porous regions are ground by default"]),
     "K0_negative_given": dict(args=["-region_soil_K0", "-0.2"] + GEOSTATIC,
                               expect=["-region_soil_K0 = -0.2", ">= 0"]),
     # the derived K0 puts the initial state outside the Mohr-Coulomb cone: the message says it
