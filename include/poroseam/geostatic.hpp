@@ -27,6 +27,7 @@ struct GroundRegion {
   double density = 0.0;           ///< rho_sat (porous) or rho_s [kg/m3]
   double k0 = 1.0;                ///< sigma'_h / sigma'_v [-]
   double alpha = 1.0;             ///< Biot coefficient; 0 for a region without pore pressure
+  std::string k0_origin;          ///< the option K0 came from, or nu/(1-nu) from nu (messages)
 };
 
 /// A horizontal layer of the column: [bottom, top] of one density.

@@ -43,6 +43,9 @@ struct Region {
   /// Part of the ground column of the geostatic state (-region_<r>_ground); unset: porous
   /// regions are ground, elastic ones are structures without initial stress.
   std::optional<bool> ground;
+  /// Where k0 came from, for messages: "-region_<r>_K0 v", or "K0 = nu/(1-nu) = ... from
+  /// -region_<r>_nu ..." when derived (never given: the message must say what to set).
+  std::string k0_origin;
   bool porous() const
   {
     return model == MaterialModel::biot || model == MaterialModel::mohr_coulomb;

@@ -104,6 +104,14 @@ PetscErrorCode Problem::setupWaterLoad(const std::vector<char> &ghost, PetscInt 
       LoadedFace f{idx[k], kWaterLoad, 0, {0, 0, 0}, boundaryIndex(*scene_, b.name)};
       PetscCall(elementIndex(ct, &f.element));
       PetscCall(outwardNormal(idx[k], support[0], f.normal));
+      // A prescribed displacement component of the same boundary would drop the water's
+      // load along it (the traction rule of readBoundary, docs/scenes.md).
+      for (const auto &bc : scene_->conditions)
+        if (error.empty() && bc.boundary == b.name && bc.kind == BcKind::displacement &&
+            std::abs(f.normal[bc.component]) > 1e-8)
+          error = "-water_load_boundaries names '" + b.name + "', where " + bc.option +
+                  " is prescribed: the free water's pressure acts along the faces' normal, "
+                  "and the prescribed component leaves none of it to apply; give one of them";
       faces_.push_back(f);
     }
     PetscCall(ISRestoreIndices(faces, &idx));

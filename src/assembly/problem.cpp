@@ -100,6 +100,7 @@ PetscErrorCode Problem::setupGeostatic(MPI_Comm comm, const std::vector<double> 
                     ? physics::saturatedDensity(r.porosity, r.solid_density, scene.fluid_density)
                     : r.solid_density;
     g.k0 = r.k0;
+    g.k0_origin = r.k0_origin;
     g.alpha = r.porous() ? r.biot_coefficient : 0.0;
     ground.push_back(g);
     lowest = std::min(lowest, g.bottom);

@@ -130,7 +130,8 @@ PetscErrorCode Problem::checkInitialYield(MPI_Comm comm)
           << "), where its diagonal is " << s0[0][0] << ", " << s0[1][1] << ", " << s0[2][2]
           << " Pa. The run would start out of equilibrium: choose -region_" << region.name
           << "_K0 between the active and passive earth pressure coefficients of its strength, "
-             "or a larger cohesion";
+             "or a larger cohesion (now "
+          << region.k0_origin << ")";
       error = msg.str();
     }
     return PetscErrorCode(0);

@@ -1,5 +1,6 @@
 #include "poroseam/layout.hpp"
 
+#include "poroseam/corner_conditions.hpp"
 #include "poroseam/interfaces.hpp"
 
 #include <vector>
@@ -122,6 +123,7 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
                "interface with flow ends on",
                bc.option.c_str(), bc.boundary.c_str());
   }
+  PetscCall(reportCornerConditions(dm, scene));
   PetscFunctionReturn(0);
 }
 

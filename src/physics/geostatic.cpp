@@ -14,6 +14,19 @@ bool same(double a, double b)
   return std::abs(a - b) <= 1e-12 * std::max({std::abs(a), std::abs(b), 1.0});
 }
 
+std::string shown(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+/// "K0 0.5 of 'rock'" or where a derived K0 came from.
+std::string origin(const GroundRegion &r)
+{
+  return r.k0_origin.empty() ? "K0 " + shown(r.k0) + " of '" + r.name + "'" : r.k0_origin;
+}
+
 } // namespace
 
 std::string buildGeostaticLayers(const std::vector<GroundRegion> &regions, double surface,
@@ -25,10 +38,12 @@ std::string buildGeostaticLayers(const std::vector<GroundRegion> &regions, doubl
   std::vector<double> z{surface};
   for (const auto &r : regions) {
     if (r.top > surface + tolerance) {
-      msg << "ground region '" << r.name << "' reaches z = " << r.top
-          << " above the soil surface " << surface
+      msg << "ground region '" << r.name << "' reaches z = " << r.top << " above the soil surface "
+          << surface
           << " (-surface_elevation): the geostatic state integrates the weight from the surface "
-             "down, so the surface must be the top of the ground";
+             "down, so the surface must be the top of the ground (a structure standing on it "
+             "takes -region_"
+          << r.name << "_ground false; porous regions are ground by default)";
       return msg.str();
     }
     z.push_back(r.bottom);
@@ -47,12 +62,22 @@ std::string buildGeostaticLayers(const std::vector<GroundRegion> &regions, doubl
         first = &r;
         continue;
       }
-      if (!same(r.density, first->density) || !same(r.k0, first->k0) ||
-          !same(r.alpha, first->alpha)) {
+      // Name the property that differs, and for K0 where each came from: a K0 derived from
+      // nu was never given, and the user has to learn which option to set.
+      std::string what;
+      if (!same(r.density, first->density))
+        what = "density (" + shown(first->density) + " and " + shown(r.density) + " kg/m3)";
+      else if (!same(r.k0, first->k0))
+        what = "K0 (" + origin(*first) + ", and " + origin(r) +
+               "; set -region_<r>_K0 to one value for both)";
+      else if (!same(r.alpha, first->alpha))
+        what = "biot_alpha (" + shown(first->alpha) + " and " + shown(r.alpha) + ")";
+      if (!what.empty()) {
         msg << "ground regions '" << first->name << "' and '" << r.name
-            << "' lie side by side between z = " << bottom << " and " << top
-            << " with different density, K0 or biot_alpha: the geostatic state is exact only for "
-               "horizontal layers (regions at the same elevation must have the same properties)";
+            << "' lie side by side between z = " << bottom << " and " << top << " with different "
+            << what
+            << ": the geostatic state is exact only for horizontal layers (regions at the same "
+               "elevation must have the same density, K0 and biot_alpha)";
         return msg.str();
       }
     }

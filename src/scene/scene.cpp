@@ -1,12 +1,13 @@
 #include "poroseam/scene.hpp"
 
 #include "poroseam/option_check.hpp"
-#include "scene_parts.hpp"
 #include "poroseam/scene_options.hpp"
+#include "scene_parts.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <petscsys.h>
 #include <set>
@@ -14,6 +15,31 @@
 
 namespace poroseam {
 namespace {
+
+/// A number as %g writes it (PETSc's own %g in messages adds a trailing dot: "5.").
+std::string number(double v)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+/// The meaningful range of -stabilization_factor F around the optimal 1/4 (docs/physics.md
+/// section 6). Measured on Terzaghi's column (tests/verification/terzaghi_2d.opts, first step
+/// dt = 0.2 s, exact settlement 4.6e-5 m): F = 0.25 gives 4.58e-5, F = 1 5.8e-5, F = 4 9.3e-5,
+/// F = 10 1.4e-4, F = 1e12 8.3e-4 (the drained settlement: no excess pressure at all). Below
+/// a tenth of 1/4 the stabilisation is as good as off.
+constexpr double kStabilizationFactorMin = 0.025, kStabilizationFactorMax = 1.0;
+
+std::string joinNames(const std::vector<PhysicalName> &names, int dim)
+{
+  std::string s;
+  for (const auto &n : names)
+    if (n.dim == dim) s += (s.empty() ? "" : ", ") + n.name;
+  return s.empty() ? "(none)" : s;
+}
+
+} // namespace
 
 /// A list option names each item once, and no item is empty ("-regions soil,,rock").
 PetscErrorCode checkListNames(MPI_Comm comm, const std::string &option,
@@ -32,14 +58,6 @@ PetscErrorCode checkListNames(MPI_Comm comm, const std::string &option,
   PetscFunctionReturn(0);
 }
 
-std::string joinNames(const std::vector<PhysicalName> &names, int dim)
-{
-  std::string s;
-  for (const auto &n : names)
-    if (n.dim == dim) s += (s.empty() ? "" : ", ") + n.name;
-  return s.empty() ? "(none)" : s;
-}
-
 PetscErrorCode findPhysical(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
                             const std::string &name, const char *option, const char *what, int *tag)
 {
@@ -53,6 +71,8 @@ PetscErrorCode findPhysical(MPI_Comm comm, const std::vector<PhysicalName> &name
           "%s: %s '%s' is not a physical group of dimension %d in the mesh; the mesh has: %s",
           option, what, name.c_str(), dim, joinNames(names, dim).c_str());
 }
+
+namespace {
 
 /// A condition's time function (-bc_<b>_<q>_ramp or _table), in the boundary's section.
 PetscErrorCode readTimeFunction(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
@@ -81,6 +101,15 @@ PetscErrorCode readTimeFunction(PetscOptionItems *PetscOptionsObject, MPI_Comm c
     const std::string err = readTimeTable(table, t, v);
     PetscCheck(err.empty(), comm, PETSC_ERR_USER_INPUT, "%s_table: %s", option.c_str(),
                err.c_str());
+    // Before its first row a table would hold its first factor (OpenGeoSys' curves do),
+    // which for a table starting at t = 5 s applies the load from t = 0 on: most likely
+    // not what was meant (a load that starts at 5 s). The run starts at t = 0: the table
+    // must say what holds from then on.
+    PetscCheck(t.front() <= 0.0, comm, PETSC_ERR_USER_INPUT,
+               "%s_table: time table '%s' starts at t = %s s, after the start of the run "
+               "(t = 0): its factor before t = %s s is not given; add a first row "
+               "'0,<factor>' (the factor is interpolated linearly between rows)",
+               option.c_str(), table.c_str(), number(t.front()).c_str(), number(t.front()).c_str());
     f = TimeFunction::table(t, v);
   }
   PetscFunctionReturn(0);
@@ -175,6 +204,18 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       PetscCheck((int)v.size() == scene.dim, comm, PETSC_ERR_USER_INPUT,
                  "%straction: expected %d comma-separated components, got %d", p.c_str(), scene.dim,
                  (int)v.size());
+      // A prescribed displacement component replaces the equilibrium row the traction's
+      // component would load: a non-zero one would be dropped without a word. (A zero
+      // component is the free reaction of that prescribed component: accepted.)
+      for (const auto &c : out)
+        PetscCheck(
+            !(c.boundary == b.name && c.kind == BcKind::displacement && v[c.component] != 0.0),
+            comm, PETSC_ERR_USER_INPUT,
+            "%s and %straction on the same boundary '%s': the prescribed displacement "
+            "%s leaves no %c traction to apply (component %d of %straction is %s, not 0); "
+            "give one of them (or split the boundary in the mesh)",
+            c.option.c_str(), p.c_str(), b.name.c_str(), comps[c.component], "xyz"[c.component],
+            c.component + 1, p.c_str(), number(v[c.component]).c_str());
       BoundaryCondition bc;
       bc.kind = BcKind::traction;
       bc.value = v;
@@ -205,105 +246,6 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       bc.option = p + "flux";
       PetscCall(add(bc));
     }
-  }
-  PetscFunctionReturn(0);
-}
-
-/// An interface's options, in its own -help section (PetscOptionsBegin in readSceneOptions).
-PetscErrorCode readInterface(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
-                             const std::vector<PhysicalName> &names, int dim, const Scene &scene,
-                             Interface &i)
-{
-  const std::string p = "-interface_" + i.name + "_";
-  bool set = false;
-  PetscFunctionBeginUser;
-  PetscCall(getStringList(PetscOptionsObject, p + "surfaces",
-                          "its Gmsh face groups, comma-separated (default: the group named " +
-                              i.name + ")",
-                          i.surfaces, &set));
-  if (!set) i.surfaces = {i.name};
-  PetscCall(checkListNames(comm, p + "surfaces", i.surfaces));
-  i.tags.clear();
-  for (const auto &surface : i.surfaces) {
-    int tag;
-    PetscCall(findPhysical(comm, names, dim - 1, surface, (p + "surfaces").c_str(),
-                           "interface surface", &tag));
-    i.tags.push_back(tag);
-  }
-  PetscCall(getString(PetscOptionsObject, p + "side1",
-                      "the region on side 1: the normal e1 points from it to side 2 (required)",
-                      i.side1, &set));
-  PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
-             "missing option %sside1: name the region on side 1 of interface '%s'", p.c_str(),
-             i.name.c_str());
-  bool known = false;
-  for (const auto &r : scene.regions)
-    if (r.name == i.side1) known = true, i.side1_tag = r.tag;
-  PetscCheck(known, comm, PETSC_ERR_USER_INPUT, "%sside1 %s: not a region listed in -regions",
-             p.c_str(), i.side1.c_str());
-  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "KN",
-                            "normal penalty stiffness K_N [Pa/m] of interface " + i.name,
-                            &i.normal_stiffness));
-  PetscCheck(i.normal_stiffness > 0.0, comm, PETSC_ERR_USER_INPUT, "%sKN = %g: must be > 0",
-             p.c_str(), i.normal_stiffness);
-  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "KT",
-                            "tangential penalty stiffness K_T [Pa/m] of interface " + i.name,
-                            &i.tangential_stiffness));
-  PetscCheck(i.tangential_stiffness > 0.0, comm, PETSC_ERR_USER_INPUT, "%sKT = %g: must be > 0",
-             p.c_str(), i.tangential_stiffness);
-  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "friction",
-                            "Coulomb friction coefficient mu [-] of interface " + i.name,
-                            &i.friction));
-  PetscCheck(i.friction >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sfriction = %g: must be >= 0",
-             p.c_str(), i.friction);
-  // Shear dilation (docs/physics.md section 4): angle psi in degrees, optional slip limit.
-  double psi = 0.0, slip_limit = 0.0;
-  PetscCall(getReal(PetscOptionsObject, p + "dilation_angle",
-                    "shear dilation angle psi [deg] of interface " + i.name + ", in [0, 90)", &psi,
-                    nullptr));
-  PetscCheck(psi >= 0.0 && psi < 90.0, comm, PETSC_ERR_USER_INPUT,
-             "%sdilation_angle = %g: expected a dilation angle in degrees, 0 <= psi < 90",
-             p.c_str(), psi);
-  i.dilation = std::tan(psi * M_PI / 180.0);
-  PetscCall(getReal(PetscOptionsObject, p + "dilation_limit",
-                    "plastic slip [m] of interface " + i.name +
-                        " after which it stops dilating (optional; none: no limit)",
-                    &slip_limit, &set));
-  if (set) {
-    PetscCheck(slip_limit >= 0.0, comm, PETSC_ERR_USER_INPUT,
-               "%sdilation_limit = %g: expected the plastic slip [m] after which the joint stops "
-               "dilating, >= 0",
-               p.c_str(), slip_limit);
-    i.dilation_slip_limit = slip_limit;
-  }
-  std::string rule = "gauss";
-  PetscCall(getString(PetscOptionsObject, p + "integration",
-                      "integration points: gauss, or nodal (Newton-Cotes/Lobatto at the vertices)",
-                      rule, nullptr));
-  PetscCheck(rule == "gauss" || rule == "nodal", comm, PETSC_ERR_USER_INPUT,
-             "%sintegration %s: expected 'gauss' or 'nodal'", p.c_str(), rule.c_str());
-  i.nodal_integration = rule == "nodal";
-  i.flow = false;
-  PetscCall(getFlag(PetscOptionsObject, p + "flow",
-                    "water flows in and through the interface (interface pressure p3)", &i.flow,
-                    nullptr));
-  if (i.flow) {
-    PetscCheck(!scene.drained, comm, PETSC_ERR_USER_INPUT,
-               "%sflow: a drained scene has no pressure, so no interface flow", p.c_str());
-    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "D0",
-                              "hydraulic aperture D0 [m] of interface " + i.name, &i.aperture0));
-    PetscCheck(i.aperture0 > 0.0, comm, PETSC_ERR_USER_INPUT, "%sD0 = %g: must be > 0", p.c_str(),
-               i.aperture0);
-    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "T1",
-                              "transmissivity T1 [m/(Pa s)] between side 1 and interface " + i.name,
-                              &i.transmissivity1));
-    PetscCall(
-        getRequiredReal(PetscOptionsObject, comm, p + "T2",
-                        "transmissivity T2 [m/(Pa s)] between interface " + i.name + " and side 2",
-                        &i.transmissivity2));
-    PetscCheck(i.transmissivity1 >= 0.0 && i.transmissivity2 >= 0.0, comm, PETSC_ERR_USER_INPUT,
-               "%sT1 = %g, %sT2 = %g: transmissivities must be >= 0 (0: impervious side)",
-               p.c_str(), i.transmissivity1, p.c_str(), i.transmissivity2);
   }
   PetscFunctionReturn(0);
 }
@@ -436,6 +378,36 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   PetscFunctionReturn(0);
 }
 
+/// The pressure stabilisation beta = F alpha^2 h^2 / (lambda + 2G) (docs/physics.md section 6)
+/// has a meaningful range around F = 1/4: outside it the run goes on, with one warning line
+/// that says what the factor does to the pressure.
+PetscErrorCode warnStabilization(MPI_Comm comm, const Scene &scene)
+{
+  const double F = scene.stabilization_factor;
+  PetscFunctionBeginUser;
+  if (!scene.hasPressure()) PetscFunctionReturn(0); // no pressure to stabilise
+  if (F < kStabilizationFactorMin)
+    PetscCall(PetscPrintf(comm,
+                          "poroseam: warning: -stabilization_factor %s %s the pressure "
+                          "stabilisation: with equal-order elements for u and p the pressure of a "
+                          "nearly undrained step (just after a load, low permeability, small "
+                          "steps) is not reliable (inf-sup): it may oscillate from vertex to "
+                          "vertex (meaningful range %s to %s, default 0.25)\n",
+                          number(F).c_str(), F == 0.0 ? "turns off" : "all but turns off",
+                          number(kStabilizationFactorMin).c_str(),
+                          number(kStabilizationFactorMax).c_str()));
+  else if (F > kStabilizationFactorMax)
+    PetscCall(PetscPrintf(comm,
+                          "poroseam: warning: -stabilization_factor %s is above its meaningful "
+                          "range (%s to %s, default 0.25): the term F alpha^2 h^2/(lambda + 2G) "
+                          "grad(dp/dt) spreads each pressure change over about sqrt(F) = %s cell "
+                          "sizes, so the pressure is over-smoothed and the excess pressure drains "
+                          "too fast (a large F: a drained response at once)\n",
+                          number(F).c_str(), number(kStabilizationFactorMin).c_str(),
+                          number(kStabilizationFactorMax).c_str(), number(std::sqrt(F)).c_str()));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
@@ -489,7 +461,7 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   for (auto &r : scene.regions) {
     const std::string title = "poroseam region " + r.name + " (-region_" + r.name + "_*)";
     PetscOptionsBegin(comm, nullptr, title.c_str(), kSceneDoc);
-    PetscCall(readRegion(PetscOptionsObject, comm, r, scene.drained));
+    PetscCall(readRegion(PetscOptionsObject, comm, r, scene.drained, scene.geostatic));
     PetscOptionsEnd();
   }
 
@@ -532,6 +504,7 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
                "where it meets a boundary, or drop -interface_%s_flow",
                i.name.c_str(), i.name.c_str(), i.name.c_str());
 
+  PetscCall(warnStabilization(comm, scene));
   PetscCall(readOutputOptions(comm, scene));
   PetscFunctionReturn(0);
 }

@@ -8,7 +8,23 @@
 namespace poroseam {
 
 /// A region's options, in its own -help section (PetscOptionsBegin in readSceneOptions).
+/// `geostatic`: the scene starts from the geostatic state (K0 is used).
 PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, Region &r,
-                          bool drained);
+                          bool drained, bool geostatic);
+
+/// An interface's options, in its own -help section (PetscOptionsBegin in readSceneOptions).
+PetscErrorCode readInterface(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
+                             const std::vector<PhysicalName> &names, int dim, const Scene &scene,
+                             Interface &i);
+
+/// A list option names each item once, and no item is empty ("-regions soil,,rock").
+PetscErrorCode checkListNames(MPI_Comm comm, const std::string &option,
+                              const std::vector<std::string> &items);
+
+/// The tag of the physical group `name` of dimension `dim`, or an error naming `option` and
+/// the groups the mesh has.
+PetscErrorCode findPhysical(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
+                            const std::string &name, const char *option, const char *what,
+                            int *tag);
 
 } // namespace poroseam

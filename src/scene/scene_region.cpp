@@ -7,12 +7,13 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 namespace poroseam {
 
 /// A region's options, in its own -help section (PetscOptionsBegin in readSceneOptions).
 PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, Region &r,
-                          bool drained)
+                          bool drained, bool geostatic)
 {
   const std::string p = "-region_" + r.name + "_";
   std::string material;
@@ -51,11 +52,24 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
   PetscCheck(r.solid_density >= 0.0, comm, PETSC_ERR_USER_INPUT,
              "%srho_s = %g: density must be >= 0", p.c_str(), r.solid_density);
   r.k0 = r.poisson / (1.0 - r.poisson);
+  bool k0_given = false;
   PetscCall(getReal(PetscOptionsObject, p + "K0",
                     "earth pressure coefficient at rest K0 [-] of the geostatic state "
                     "(default nu/(1-nu))",
-                    &r.k0, nullptr));
-  PetscCheck(r.k0 >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sK0 = %g: must be >= 0", p.c_str(), r.k0);
+                    &r.k0, &k0_given));
+  {
+    // Messages about K0 say where it came from: a derived default was never given, so the
+    // user must learn which option set it and which one to set instead.
+    char origin[256];
+    if (k0_given)
+      std::snprintf(origin, sizeof origin, "%sK0 %g", p.c_str(), r.k0);
+    else
+      std::snprintf(origin, sizeof origin, "K0 = nu/(1-nu) = %g from %snu %g (%sK0 not given)",
+                    r.k0, p.c_str(), r.poisson, p.c_str());
+    r.k0_origin = origin;
+  }
+  PetscCheck(!k0_given || r.k0 >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sK0 = %g: must be >= 0",
+             p.c_str(), r.k0);
   {
     // Read as text so that a bad value gets our one-line message, not PETSc's trace.
     std::string ground = r.inGround() ? "true" : "false";
@@ -76,6 +90,12 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
       r.ground = yes;
     }
   }
+  // K0 enters only the geostatic state of the ground: a negative nu (valid) leaves a
+  // negative derived K0 unused elsewhere.
+  PetscCheck(k0_given || r.k0 >= 0.0 || !geostatic || !r.inGround(), comm, PETSC_ERR_USER_INPUT,
+             "%s is negative: the geostatic state needs K0 >= 0; set %sK0 explicitly (the "
+             "ratio of horizontal to vertical effective stress at rest)",
+             r.k0_origin.c_str(), p.c_str());
   if (r.porous()) {
     PetscCall(getReal(PetscOptionsObject, p + "porosity", "porosity n [-], in [0, 1)", &r.porosity,
                       nullptr));

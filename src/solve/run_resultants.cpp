@@ -32,13 +32,15 @@ PetscErrorCode collectBoundaryDofs(Run &run)
     for (int b = 0; b < nb; ++b)
       if (scene.boundaries[b].name == bc.boundary) prescribes[b] |= bit;
   }
-  // Every constrained unknown of the section on a boundary that prescribes it goes to the first
-  // such boundary: a corner where two boundaries fix ux is counted once, and a corner of the
-  // prescribed top pressure is not counted for the impervious side. The unknowns are those of
-  // every point of the boundary (its closure), not only of its vertices.
+  // Every constrained unknown of the section on a boundary that prescribes it goes to the last
+  // such boundary in -boundaries order, the one whose value holds there (the rule of the
+  // section constraints, docs/scenes.md "Where conditions meet"): a corner where two
+  // boundaries fix ux is counted once, and a corner of the prescribed top pressure is not
+  // counted for the impervious side. The unknowns are those of every point of the boundary
+  // (its closure), not only of its vertices.
   std::vector<char> taken(storage, 0);
   run.boundary_dofs.assign(nb, BoundaryDofs());
-  for (int b = 0; b < nb; ++b) {
+  for (int b = nb - 1; b >= 0; --b) {
     if (!prescribes[b]) continue;
     DMLabel label;
     PetscCall(DMGetLabel(run.dm, boundaryLabelName(scene.boundaries[b].name).c_str(), &label));

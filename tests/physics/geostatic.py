@@ -174,13 +174,13 @@ def at_rest(label, scene, dim, extents, water, args, ranks=1, joint=None, surfac
     for i, z in enumerate(zs):
         probes += [f"-probe_z{i}", ("0.05," if dim == 2 else "0.05,0.05,") + str(z)]
     run_args = ["-water_level", water, "-ts_max_steps", 3, "-ts_max_time", 3] + args + probes
-    # The side checked below first among the boundaries: a corner it shares with the fixed
+    # The side checked below last among the boundaries: a corner it shares with the fixed
     # bottom (both prescribe ux) then counts for the side (docs/outputs.md, "Forces and flows
     # through boundaries"), so its column is the whole side's reaction.
     side = "left" if dim == 2 else "xmin"
     names = opts["-boundaries"].split(",")
     if side in names:
-        run_args += ["-boundaries", ",".join([side] + [n for n in names if n != side])]
+        run_args += ["-boundaries", ",".join([n for n in names if n != side] + [side])]
     for key, value in (extra_opts or {}).items():
         run_args += [key, value]
     out = common.output_dir(f"geostatic_{label}")

@@ -126,6 +126,13 @@ TEST(Geostatic, RefusesWhatItCannotMakeExact)
   refused({{"a", -3.0, 0.0, 1900.0, 0.5, 1.0}, {"b", -2.0, 0.0, 2000.0, 0.5, 1.0}}, "side by side");
   refused({{"a", -3.0, 0.0, 1900.0, 0.5, 1.0}, {"b", -3.0, 0.0, 1900.0, 0.6, 1.0}}, "side by side");
   refused({{"a", -3.0, 0.0, 1900.0, 0.5, 1.0}, {"b", -3.0, 0.0, 1900.0, 0.5, 0.9}}, "side by side");
+  // K0 differing side by side: the message says where each K0 came from (a derived one was
+  // never given: the user must learn which option set it).
+  refused({{"a", -3.0, 0.0, 1900.0, 0.5, 1.0,
+            "K0 = nu/(1-nu) = 0.5 from -region_a_nu 0.333333 (-region_a_K0 not given)"},
+           {"b", -3.0, 0.0, 1900.0, 0.6, 1.0, "-region_b_K0 0.6"}},
+          "different K0 (K0 = nu/(1-nu) = 0.5 from -region_a_nu 0.333333 (-region_a_K0 not "
+          "given), and -region_b_K0 0.6; set -region_<r>_K0 to one value for both)");
   // A gap between layers, or between the top of the ground and the surface.
   refused({{"a", -1.0, 0.0, 1900.0, 0.5, 1.0}, {"b", -3.0, -2.0, 2000.0, 0.5, 1.0}},
           "no ground region between z = -2 and -1");
