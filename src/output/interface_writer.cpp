@@ -55,6 +55,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace poroseam {
@@ -83,6 +84,8 @@ struct InterfaceWriter::Impl {
   PetscViewer viewer = nullptr;
   std::string h5name = "interfaces.h5";
   std::string xmfPath[2]; // interface_cells.xmf, interface_points.xmf
+  std::string h5Path, dir;
+  bool failed = false; // a write failed (agreed by every rank): close without writing more
   std::vector<double> times;
 
   // Set at the first write.
@@ -101,6 +104,9 @@ struct InterfaceWriter::Impl {
                                         double time);
   std::vector<Attribute> attributes(bool cells) const;
   PetscErrorCode writeXdmf();
+  /// The values of one write() (collective), flushed.
+  PetscErrorCode writeStep(const std::vector<CellRecord> &cells,
+                           const std::vector<PointRecord> &points, double time);
   const char *units(const std::string &name) const
   {
     return unitsOf(name, dim, scene->axisymmetric);
@@ -447,7 +453,9 @@ PetscErrorCode InterfaceWriter::Impl::writeXdmf()
       x << "  </Domain>\n"
         << "</Xdmf>\n";
     }
+    failed = true; // until the index is written: a close after this error writes nothing more
     PetscCall(xdmf::replaceFile(comm, xmfPath[grid], x.str(), kWho));
+    failed = false;
   }
   PetscFunctionReturn(0);
 }
@@ -456,7 +464,12 @@ InterfaceWriter::~InterfaceWriter()
 {
   if (impl_) {
     // Errors cannot propagate from a destructor; close() is expected to be called explicitly.
-    if (impl_->viewer) (void)close();
+    // Here the run is ending in an error that every rank has met (the I/O errors are agreed):
+    // close the file on every rank together, quietly (the error has been reported).
+    if (impl_->viewer && !PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)) {
+      (void)close();
+      (void)PetscPopErrorHandler();
+    }
     delete impl_;
     impl_ = nullptr;
   }
@@ -487,8 +500,14 @@ PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const st
   // Resuming: the mesh is written again at the first write (PETSc's HDF5 viewer overwrites
   // existing datasets), values after the checkpoint's last time are overwritten.
   if (resume) im.times = *resume;
-  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(),
-                                resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
+  im.h5Path = prefix + ".h5";
+  im.dir = dir;
+  PetscCall(xdmf::agreed(comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(PetscViewerHDF5Open(comm, im.h5Path.c_str(),
+                                  resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
+    PetscFunctionReturn(0);
+  }));
   // (The interrupted run's index stays until the first write knows the mesh again.)
   if (!resume) PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
@@ -502,14 +521,13 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
              "InterfaceWriter::write called before open");
   Impl &im = *impl_;
   if (!im.enabled) PetscFunctionReturn(0);
-  PetscCheck(im.viewer, im.comm, PETSC_ERR_ARG_WRONGSTATE, "InterfaceWriter::write after close");
+  PetscCheck(im.viewer && !im.failed, im.comm, PETSC_ERR_ARG_WRONGSTATE,
+             "InterfaceWriter::write after close or a failure");
 
   std::vector<CellRecord> cells;
   std::vector<PointRecord> points;
   PetscCall(interface_output::collect(mech, im.dim, local_solution, rates, cells, points));
-  if (!im.mesh_written) {
-    PetscCall(im.writeMesh(cells, points));
-  } else {
+  if (im.mesh_written) {
     int same = cells.size() == im.local_cells.size(), all;
     for (size_t i = 0; same && i < cells.size(); ++i)
       same = cells[i].cell == im.local_cells[i] &&
@@ -518,6 +536,29 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
     PetscCheck(all, im.comm, PETSC_ERR_ARG_WRONGSTATE,
                "InterfaceWriter: the interface cells changed since the first write");
   }
+  {
+    // At most some 40 values per point and cell node, and the mesh at the first write.
+    const double bytes = 8.0 * 64.0 * (double)(cells.size() + points.size());
+    char what[64];
+    std::snprintf(what, sizeof what, "the interface fields at t = %g s", time);
+    PetscCall(xdmf::reserveSpace(im.comm, im.dir, im.h5Path, bytes, what));
+  }
+  PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (!im.mesh_written) PetscCall(im.writeMesh(cells, points));
+    PetscCall(im.writeStep(cells, points, time));
+    PetscFunctionReturn(0);
+  }));
+  im.times.push_back(time);
+  PetscCall(im.writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceWriter::Impl::writeStep(const std::vector<CellRecord> &cells,
+                                                const std::vector<PointRecord> &points, double time)
+{
+  Impl &im = *this;
+  PetscFunctionBeginUser;
   if (im.num_cells > 0) {
     const int t = im.dim - 1;
     std::vector<Values> cv, pv;
@@ -531,8 +572,6 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
     PetscCall(im.writeNodeDisplacements(cells, step, time));
     PetscCall(PetscViewerFlush(im.viewer));
   }
-  im.times.push_back(time);
-  PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
 }
 
@@ -540,7 +579,16 @@ PetscErrorCode InterfaceWriter::close()
 {
   PetscFunctionBeginUser;
   if (!impl_ || !impl_->viewer) PetscFunctionReturn(0);
-  PetscCall(PetscViewerDestroy(&impl_->viewer));
+  Impl &im = *impl_;
+  if (im.failed) { // the indexes name what the file holds; the error is on its way up
+    PetscCall(PetscViewerDestroy(&im.viewer));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(PetscViewerDestroy(&im.viewer));
+    PetscFunctionReturn(0);
+  }));
   // A resumed writer that wrote nothing does not know the mesh: keep the existing index.
   if (impl_->mesh_written || impl_->times.empty()) PetscCall(impl_->writeXdmf());
   PetscFunctionReturn(0);

@@ -1,11 +1,18 @@
 // Helpers shared by the HDF5 + XDMF writers (see xdmf.hpp).
 #include "xdmf.hpp"
 
+#include "file_replace.hpp"
+
+#include "poroseam/collective_check.hpp"
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
-#include <fstream>
 #include <system_error>
+#include <unistd.h>
 
 namespace poroseam::xdmf {
 
@@ -29,7 +36,60 @@ PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char
     if (ec) ok = 0;
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "%s: cannot create directory %s", who, dir.c_str());
+  PetscCheck(ok, comm, kAgreedIoError, "%s: cannot create directory %s", who, dir.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode reserveSpace(MPI_Comm comm, const std::string &dir, const std::string &file,
+                            double local_bytes, const std::string &what)
+{
+  PetscMPIInt rank;
+  double bytes = 0.0;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Allreduce(&local_bytes, &bytes, 1, MPI_DOUBLE, MPI_SUM, comm));
+  // HDF5's own records (object headers, attributes, B-trees) on top of the values.
+  bytes = 1.25 * bytes + 64.0 * 1024.0;
+  std::string error;
+  if (rank == 0) {
+    const std::string reserve = (dir.empty() ? std::string(".") : dir) + "/.poroseam.reserve";
+    const int fd =
+        open(reserve.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+    int why = fd < 0 ? errno : posix_fallocate(fd, 0, (off_t)bytes);
+    if (fd >= 0) close(fd);
+    unlink(reserve.c_str());
+    // EINVAL/EOPNOTSUPP: a file system without fallocate (glibc then writes the blocks
+    // itself); anything else but a lack of space is left to the write to report.
+    if (why == ENOSPC || why == EDQUOT) {
+      char size[32];
+      std::snprintf(size, sizeof size, "%.0f kB", bytes / 1000.0);
+      error = "no space left for " + what + " in " + file + " (" + size +
+              " needed: " + std::strerror(why) + "); the files hold every step before it";
+    }
+  }
+  PetscCall(checkOnAllRanks(comm, error)); // kAgreedIoError
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode error, bool *failed)
+{
+  PetscFunctionBeginUser;
+  int mine = error != 0, any = 0;
+  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm));
+  if (!any) PetscFunctionReturn(0);
+  *failed = true;
+  std::string message;
+  if (error) {
+    const char *text = nullptr;
+    char *specific = nullptr;
+    PetscErrorMessage(error, &text, &specific);
+    message = "cannot write " + file + ": " +
+              (specific && *specific ? specific
+               : text                ? text
+                                     : "error") +
+              " (disk full, quota exceeded or a read-only file system?)";
+  }
+  PetscCall(checkOnAllRanks(comm, message));
   PetscFunctionReturn(0);
 }
 
@@ -37,26 +97,14 @@ PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::st
                            const char *who)
 {
   PetscMPIInt rank;
-  int ok = 1;
+  bool ok = true;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    const std::string tmp = path + ".tmp";
-    {
-      std::ofstream out(tmp, std::ios::trunc);
-      out << text;
-      out.close();
-      if (!out) ok = 0;
-    }
-    if (ok) {
-      std::error_code ec;
-      std::filesystem::rename(tmp, path, ec);
-      if (ec) ok = 0;
-    }
-  }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "%s: cannot write %s", who, path.c_str());
+  std::string why;
+  if (rank == 0) ok = replaceFileContents(path, text, &why);
+  (void)who; // the path says which file; the writer's name would say nothing to a user
+  PetscCall(checkOnAllRanks(comm, ok ? "" : "cannot write " + path + ": " + why));
   PetscFunctionReturn(0);
 }
 

@@ -14,6 +14,10 @@ namespace poroseam::xdmf {
 /// %.17g: a double that reads back exactly.
 std::string formatDouble(double x);
 
+/// The error of an I/O failure that every rank has agreed on (disk full, a file that cannot be
+/// written): main.cpp reports it in one line and every rank ends together.
+constexpr PetscErrorCode kAgreedIoError = PETSC_ERR_USER_INPUT;
+
 /// Rank 0 creates `dir` (and parents); collective. `who` prefixes the error message.
 PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char *who);
 
@@ -21,6 +25,33 @@ PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char
 /// sees a partial file; collective (the outcome is broadcast). Only rank 0's text is used.
 PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::string &text,
                            const char *who);
+
+/// Collective, before a write of `local_bytes` on each rank into `file` (in `dir`): rank 0
+/// reserves their sum (and a margin for HDF5's own records) with posix_fallocate, which counts
+/// against quotas too, and frees it at once. A full disk or quota then ends the run before a
+/// partial step, with every file readable up to the last complete one. Fails (agreed) with
+/// "no space left for <what> in <file> ...".
+PetscErrorCode reserveSpace(MPI_Comm comm, const std::string &dir, const std::string &file,
+                            double local_bytes, const std::string &what);
+
+/// Collective: runs `body` (PETSc calls writing `file`) with PETSc's errors returned quietly,
+/// then agrees on the outcome: when it failed on any rank, `*failed` is set on every rank and
+/// every rank fails with kAgreedIoError and one message naming the file. An error on one rank
+/// (the HDF5 library's, a write refused) can otherwise leave the others waiting for it.
+template <class Body>
+PetscErrorCode agreed(MPI_Comm comm, const std::string &file, bool *failed, Body body);
+PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode error, bool *failed);
+
+template <class Body>
+PetscErrorCode agreed(MPI_Comm comm, const std::string &file, bool *failed, Body body)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+  const PetscErrorCode error = body();
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(agreeOn(comm, file, error, failed));
+  PetscFunctionReturn(0);
+}
 
 /// Collective: writes the rank-ordered concatenation of every rank's `values` (bs values per
 /// row) as `<group>/<name>`, shape [N] when bs == 1, else [N, bs] (PETSc Vec, doubles). The
