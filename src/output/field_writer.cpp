@@ -447,8 +447,7 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   // A restarted run appends: PETSc's HDF5 viewer overwrites datasets that exist (the same
   // geometry and topology; field times after the checkpoint), so no stale time survives.
   if (resume) im.times = *resume;
-  PetscCall(
-      xdmf::reserveSpace(comm, dir, im.h5Path, 8.0 * (xyz.size() + cells.size()), "the mesh"));
+  PetscCall(reserveSpace(comm, dir, im.h5Path, 8.0 * (xyz.size() + cells.size()), "the mesh"));
   PetscCall(xdmf::agreed(comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     PetscCall(PetscViewerHDF5Open(comm, im.h5Path.c_str(),
@@ -525,7 +524,7 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
   {
     char what[64];
     std::snprintf(what, sizeof what, "the fields at t = %g s", time);
-    PetscCall(xdmf::reserveSpace(im.comm, im.dir, im.h5Path, bytes, what));
+    PetscCall(reserveSpace(im.comm, im.dir, im.h5Path, bytes, what));
   }
   PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -618,8 +617,8 @@ PetscErrorCode FieldWriter::writeRegions(const std::vector<PetscInt> &cells,
   for (size_t r = 0; r < names.size(); ++r)
     list += (r ? "," : "") + names[r];
   PetscCheck(!im.failed, im.comm, PETSC_ERR_ARG_WRONGSTATE, "FieldWriter: write after a failure");
-  PetscCall(xdmf::reserveSpace(im.comm, im.dir, im.h5Path, 8.0 * ids.size() + list.size(),
-                               "the cell regions"));
+  PetscCall(
+      reserveSpace(im.comm, im.dir, im.h5Path, 8.0 * ids.size() + list.size(), "the cell regions"));
   PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     PetscCall(xdmf::writeInts(im.viewer, im.comm, "/cell_fields", "region", 1, ids, "1"));

@@ -541,7 +541,7 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
     const double bytes = 8.0 * 64.0 * (double)(cells.size() + points.size());
     char what[64];
     std::snprintf(what, sizeof what, "the interface fields at t = %g s", time);
-    PetscCall(xdmf::reserveSpace(im.comm, im.dir, im.h5Path, bytes, what));
+    PetscCall(reserveSpace(im.comm, im.dir, im.h5Path, bytes, what));
   }
   PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;

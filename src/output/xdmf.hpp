@@ -3,6 +3,8 @@
 // Internal to src/output.
 #pragma once
 
+#include "poroseam/disk_space.hpp"
+
 #include <petscis.h>
 #include <petscvec.h>
 #include <petscviewerhdf5.h>
@@ -25,14 +27,6 @@ PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char
 /// sees a partial file; collective (the outcome is broadcast). Only rank 0's text is used.
 PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::string &text,
                            const char *who);
-
-/// Collective, before a write of `local_bytes` on each rank into `file` (in `dir`): rank 0
-/// reserves their sum (and a margin for HDF5's own records) with posix_fallocate, which counts
-/// against quotas too, and frees it at once. A full disk or quota then ends the run before a
-/// partial step, with every file readable up to the last complete one. Fails (agreed) with
-/// "no space left for <what> in <file> ...".
-PetscErrorCode reserveSpace(MPI_Comm comm, const std::string &dir, const std::string &file,
-                            double local_bytes, const std::string &what);
 
 /// Collective: runs `body` (PETSc calls writing `file`) with PETSc's errors returned quietly,
 /// then agrees on the outcome: when it failed on any rank, `*failed` is set on every rank and

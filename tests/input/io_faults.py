@@ -16,7 +16,7 @@ Cases (docs/input_errors.md, "Output directory and I/O faults"):
   symlink_<what>_np2    a symbolic link in the output directory (checkpoints, mesh, a file,
                         a file inside checkpoints/): refused, the link's target untouched
                         (its listing, contents and mtimes)
-  disk_full_fields_np2, disk_full_csv_np2
+  disk_full_fields_np2, disk_full_csv_np2, disk_full_checkpoint_np2
                         a full disk (small tmpfs; skipped with 77 where it cannot be mounted)
                         ends in one line; fields.h5 opens (h5py), fields.xmf names only
                         datasets that exist, timeseries.csv holds whole rows only
@@ -59,6 +59,7 @@ for what in ["checkpoints", "mesh", "file", "in_checkpoints"]:
     CASES["symlink_" + what + "_np2"] = dict(kind="symlink", what=what)
 CASES["disk_full_fields_np2"] = dict(kind="disk_full", fields=True)
 CASES["disk_full_csv_np2"] = dict(kind="disk_full", fields=False)
+CASES["disk_full_checkpoint_np2"] = dict(kind="disk_full", fields=False, checkpoint=True)
 
 
 def env():
@@ -151,7 +152,7 @@ def case_file(out, case):
     with open(os.path.join(out, "O", case["name"]), "w") as f:
         f.write("not a folder\n")
     rc, text = run(command(os.path.join(out, "O")))
-    return one_line_failure(rc, text, [case["name"], "is not a directory"], out)
+    return one_line_failure(rc, text, [case["name"], "ot a directory"], out)
 
 
 def case_readonly(out, case):
@@ -355,15 +356,19 @@ def case_disk_full(out, case):
         # leave room for a few steps' fields, or (no fields) some 60 rows of the series
         st = os.statvfs(mnt)
         free = st.f_bavail * st.f_frsize
-        room = 300 * 1024 if case["fields"] else 24 * 1024
+        room = 300 * 1024 if case["fields"] else 60 * 1024 if case.get("checkpoint") else \
+            24 * 1024
         with open(os.path.join(mnt, "filler"), "wb") as f:
             f.write(b"\0" * (free - room))
         o = os.path.join(mnt, "O")
         cmd = ["mpiexec", "-n", "2", EXE, "-options_file", BASE_SCENE, "-mesh", msh,
                "-output_dir", o, "-output_fields_every", "1" if case["fields"] else "0"]
+        if case.get("checkpoint"):
+            cmd += ["-checkpoint_every", "1"]
         rc, text = run(cmd)
-        failures = one_line_failure(rc, text, ["no space left" if case["fields"] else
-                                               "No space left on device"], out)
+        expect = "no space left for the checkpoint" if case.get("checkpoint") else \
+            "no space left for the fields" if case["fields"] else "No space left on device"
+        failures = one_line_failure(rc, text, [expect], out)
         if rc != "timeout":
             failures += check_readable(o)
         return failures
