@@ -104,9 +104,10 @@ struct FieldWriter::Impl {
   std::string h5Path;
   std::string dir;
   std::string xmfPath;
-  bool failed = false; // a write failed (agreed by every rank): close without writing more
-  PetscInt dim = 0;    // topological dimension
-  PetscInt cdim = 0;   // coordinate dimension
+  bool failed = false;          // a write failed (agreed by every rank): close without writing more
+  PetscInt test_fail_rank = -2; // -test_io_fail_rank: this rank's writes fail (-1: every rank)
+  PetscInt dim = 0;             // topological dimension
+  PetscInt cdim = 0;            // coordinate dimension
   DMPolytopeType cellType = DM_POLYTOPE_UNKNOWN;
   PetscInt corners = 0;
   PetscInt numCells = 0;    // global number of written cells
@@ -298,6 +299,8 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   im.h5name = basename + ".h5";
   im.h5Path = prefix + ".h5";
   im.dir = dir;
+  PetscCall(
+      PetscOptionsGetInt(nullptr, nullptr, "-test_io_fail_rank", &im.test_fail_rank, nullptr));
   im.xmfPath = prefix + ".xmf";
 
   PetscCall(PetscObjectReference((PetscObject)solution_dm));
@@ -527,7 +530,12 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
     PetscCall(reserveSpace(im.comm, im.dir, im.h5Path, bytes, what));
   }
   PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscMPIInt rank;
     PetscFunctionBeginUser;
+    PetscCallMPI(MPI_Comm_rank(im.comm, &rank));
+    // Test hook standing in for a write refused on one rank (tests/input/io_faults.py).
+    PetscCheck(im.test_fail_rank != rank && im.test_fail_rank != -1, PETSC_COMM_SELF,
+               PETSC_ERR_FILE_WRITE, "write refused (test hook -test_io_fail_rank)");
     PetscCall(im.writeStep(time, disp, pres, excess, cells));
     PetscFunctionReturn(0);
   }));

@@ -43,10 +43,6 @@ PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char
 PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode error, bool *failed)
 {
   PetscFunctionBeginUser;
-  int mine = error != 0, any = 0;
-  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm));
-  if (!any) PetscFunctionReturn(0);
-  *failed = true;
   std::string message;
   if (error) {
     const char *text = nullptr;
@@ -58,6 +54,35 @@ PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode er
                                      : "error") +
               " (disk full, quota exceeded or a read-only file system?)";
   }
+  int mine = error != 0, any = 0;
+  MPI_Request request;
+  PetscCallMPI(MPI_Iallreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm, &request));
+  if (!error) {
+    PetscCallMPI(MPI_Wait(&request, MPI_STATUS_IGNORE));
+  } else {
+    // The other ranks may never come: an HDF5 call that failed here only can leave them
+    // inside the library's own collective calls, waiting for this rank. After a grace
+    // (-io_agreement_timeout, seconds) this rank says what failed and ends them all: the one
+    // case where a run ends in MPI_Abort, rather than a hang.
+    PetscReal grace = 120.0;
+    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-io_agreement_timeout", &grace, nullptr));
+    const double start = MPI_Wtime();
+    for (int done = 0; !done;) {
+      PetscCallMPI(MPI_Test(&request, &done, MPI_STATUS_IGNORE));
+      if (done) break;
+      if (MPI_Wtime() - start > grace) {
+        std::fprintf(stderr,
+                     "poroseam: error: %s; the other ranks did not end with this one within "
+                     "%g s (-io_agreement_timeout): ending the run\n",
+                     message.c_str(), (double)grace);
+        std::fflush(stderr);
+        MPI_Abort(comm, 1);
+      }
+      usleep(10000);
+    }
+  }
+  if (!any) PetscFunctionReturn(0);
+  *failed = true;
   PetscCall(checkOnAllRanks(comm, message));
   PetscFunctionReturn(0);
 }

@@ -16,6 +16,12 @@ Cases (docs/input_errors.md, "Output directory and I/O faults"):
   symlink_<what>_np2    a symbolic link in the output directory (checkpoints, mesh, a file,
                         a file inside checkpoints/): refused, the link's target untouched
                         (its listing, contents and mtimes)
+  hdf5_refused_all_np2  an HDF5 write of fields.h5 refused on every rank (test hook
+                        -test_io_fail_rank -1): one line, every rank ends, files readable
+  hdf5_refused_rank1_np2
+                        refused on rank 1 only, while rank 0 waits inside HDF5's collective
+                        calls: rank 1 says it in one line and ends the run with MPI_Abort after
+                        -io_agreement_timeout (5 s here): no hang
   disk_full_fields_np2, disk_full_csv_np2, disk_full_checkpoint_np2
                         a full disk (small tmpfs; skipped with 77 where it cannot be mounted)
                         ends in one line; fields.h5 opens (h5py), fields.xmf names only
@@ -60,6 +66,9 @@ for what in ["checkpoints", "mesh", "file", "in_checkpoints"]:
 CASES["disk_full_fields_np2"] = dict(kind="disk_full", fields=True)
 CASES["disk_full_csv_np2"] = dict(kind="disk_full", fields=False)
 CASES["disk_full_checkpoint_np2"] = dict(kind="disk_full", fields=False, checkpoint=True)
+# an HDF5 write refused on every rank / on rank 1 only (test hook -test_io_fail_rank)
+CASES["hdf5_refused_all_np2"] = dict(kind="refused", rank="-1")
+CASES["hdf5_refused_rank1_np2"] = dict(kind="refused", rank="1")
 
 
 def env():
@@ -89,7 +98,7 @@ def run(cmd):
     return rc, text
 
 
-def one_line_failure(rc, text, expect, out):
+def one_line_failure(rc, text, expect, out, abort_ok=False):
     """The failures of a run that must end in one clear error line naming `expect`."""
     failures = []
     if rc == "timeout":
@@ -107,7 +116,7 @@ def one_line_failure(rc, text, expect, out):
     for s in CRASH:
         if re.search(s, text):
             failures.append(f"crash signature '{s}' in the output")
-    for s in ("PETSC ERROR", "MPI_ABORT", "Traceback"):
+    for s in ("PETSC ERROR", "Traceback") + (() if abort_ok else ("MPI_ABORT",)):
         if s in text:
             failures.append(f"the output contains '{s}'")
     return failures
@@ -376,6 +385,21 @@ def case_disk_full(out, case):
         umount(mnt)
 
 
+def case_refused(out, case):
+    o = os.path.join(out, "O")
+    t0 = time.time()
+    rc, text = run(["mpiexec", "-n", "2", EXE, "-options_file", BASE_SCENE, "-output_dir", o,
+                    "-output_fields_every", "1", "-ts_max_time", "0.4", "-test_io_fail_rank",
+                    case["rank"], "-io_agreement_timeout", "5"])
+    one_rank = case["rank"] != "-1"
+    failures = one_line_failure(rc, text, ["fields.h5", "test hook"], out, abort_ok=one_rank)
+    if one_rank and time.time() - t0 > 60:
+        failures.append(f"took {time.time() - t0:.0f} s with a grace of 5 s")
+    if not one_rank and rc != "timeout":
+        failures += check_readable(o)
+    return failures
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--case")
@@ -394,7 +418,8 @@ def main():
     result = globals()["case_" + {"directory": "directory", "file": "file",
                                   "readonly": "readonly", "concurrent": "concurrent",
                                   "killed": "killed", "symlink": "symlink",
-                                  "disk_full": "disk_full"}[case["kind"]]](out, case)
+                                  "disk_full": "disk_full",
+                                  "refused": "refused"}[case["kind"]]](out, case)
     if isinstance(result, str):
         print(f"SKIP {a.case}: {result}")
         return SKIP
