@@ -301,6 +301,10 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   im.dir = dir;
   PetscCall(
       PetscOptionsGetInt(nullptr, nullptr, "-test_io_fail_rank", &im.test_fail_rank, nullptr));
+  { // read where an error needs it (xdmf::agreeOn); here too, so that it is never "unused"
+    PetscReal grace;
+    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-io_agreement_timeout", &grace, nullptr));
+  }
   im.xmfPath = prefix + ".xmf";
 
   PetscCall(PetscObjectReference((PetscObject)solution_dm));
