@@ -105,6 +105,7 @@ struct FieldWriter::Impl {
   std::string dir;
   std::string xmfPath;
   bool failed = false;          // a write failed (agreed by every rank): close without writing more
+  xdmf::Rendezvous closing;     // for a close from the destructor
   PetscInt test_fail_rank = -2; // -test_io_fail_rank: this rank's writes fail (-1: every rank)
   PetscInt dim = 0;             // topological dimension
   PetscInt cdim = 0;            // coordinate dimension
@@ -258,9 +259,11 @@ FieldWriter::~FieldWriter()
 {
   if (impl_) {
     // Errors cannot propagate from a destructor; close() is expected to be called explicitly.
-    // Here the run is ending in an error that every rank has met (the I/O errors are agreed):
-    // close the file on every rank together, quietly (the error has been reported).
-    if (impl_->viewer && !PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)) {
+    // Here the run is ending in an error: close the file on every rank together, quietly (the
+    // error has been reported), if every rank is here within 20 s; after an error on one rank
+    // only, the others never come (main.cpp then ends the run with MPI_Abort).
+    if (impl_->viewer && impl_->closing.allThere(20.0) &&
+        !PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)) {
       (void)close();
       (void)PetscPopErrorHandler();
     }
@@ -298,6 +301,7 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   const std::string prefix = dir.empty() ? basename : dir + "/" + basename;
   im.h5name = basename + ".h5";
   im.h5Path = prefix + ".h5";
+  PetscCall(im.closing.init(comm));
   im.dir = dir;
   PetscCall(
       PetscOptionsGetInt(nullptr, nullptr, "-test_io_fail_rank", &im.test_fail_rank, nullptr));

@@ -85,7 +85,8 @@ struct InterfaceWriter::Impl {
   std::string h5name = "interfaces.h5";
   std::string xmfPath[2]; // interface_cells.xmf, interface_points.xmf
   std::string h5Path, dir;
-  bool failed = false; // a write failed (agreed by every rank): close without writing more
+  bool failed = false;      // a write failed (agreed by every rank): close without writing more
+  xdmf::Rendezvous closing; // for a close from the destructor
   std::vector<double> times;
 
   // Set at the first write.
@@ -464,9 +465,11 @@ InterfaceWriter::~InterfaceWriter()
 {
   if (impl_) {
     // Errors cannot propagate from a destructor; close() is expected to be called explicitly.
-    // Here the run is ending in an error that every rank has met (the I/O errors are agreed):
-    // close the file on every rank together, quietly (the error has been reported).
-    if (impl_->viewer && !PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)) {
+    // Here the run is ending in an error: close the file on every rank together, quietly (the
+    // error has been reported), if every rank is here within 20 s; after an error on one rank
+    // only, the others never come (main.cpp then ends the run with MPI_Abort).
+    if (impl_->viewer && impl_->closing.allThere(20.0) &&
+        !PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)) {
       (void)close();
       (void)PetscPopErrorHandler();
     }
@@ -501,6 +504,7 @@ PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const st
   // existing datasets), values after the checkpoint's last time are overwritten.
   if (resume) im.times = *resume;
   im.h5Path = prefix + ".h5";
+  PetscCall(im.closing.init(comm));
   im.dir = dir;
   PetscCall(xdmf::agreed(comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;

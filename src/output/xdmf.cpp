@@ -87,6 +87,37 @@ PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode er
   PetscFunctionReturn(0);
 }
 
+Rendezvous::~Rendezvous()
+{
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (comm_ != MPI_COMM_NULL && !pending_ && !finalized) MPI_Comm_free(&comm_);
+}
+
+PetscErrorCode Rendezvous::init(MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  if (comm_ == MPI_COMM_NULL) PetscCallMPI(MPI_Comm_dup(comm, &comm_));
+  PetscFunctionReturn(0);
+}
+
+bool Rendezvous::allThere(double seconds)
+{
+  if (comm_ == MPI_COMM_NULL) return false;
+  MPI_Request request;
+  if (MPI_Ibarrier(comm_, &request) != MPI_SUCCESS) return false;
+  const double start = MPI_Wtime();
+  for (int done = 0;;) {
+    if (MPI_Test(&request, &done, MPI_STATUS_IGNORE) != MPI_SUCCESS) return false;
+    if (done) return true;
+    if (MPI_Wtime() - start > seconds) {
+      pending_ = true;
+      return false;
+    }
+    usleep(1000);
+  }
+}
+
 PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::string &text,
                            const char *who)
 {

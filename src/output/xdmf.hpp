@@ -47,6 +47,26 @@ PetscErrorCode agreed(MPI_Comm comm, const std::string &file, bool *failed, Body
   PetscFunctionReturn(0);
 }
 
+/// For a writer's destructor: whether every rank is there to close its file together. A
+/// writer destroyed after an error on one rank only (main.cpp then ends the run with
+/// MPI_Abort) must not start a collective close that the other ranks never join: that was
+/// the hang of issue 23 (rank 1 closing fields.h5, rank 0 flushing it elsewhere).
+class Rendezvous {
+public:
+  Rendezvous() = default;
+  Rendezvous(const Rendezvous &) = delete;
+  Rendezvous &operator=(const Rendezvous &) = delete;
+  ~Rendezvous();
+  /// Collective: a communicator of its own, so that no other operation can match the barrier.
+  PetscErrorCode init(MPI_Comm comm);
+  /// A nonblocking barrier, given `seconds` to complete; false when some rank did not come.
+  bool allThere(double seconds);
+
+private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  bool pending_ = false; // a barrier left unfinished: the communicator is not freed
+};
+
 /// Collective: writes the rank-ordered concatenation of every rank's `values` (bs values per
 /// row) as `<group>/<name>`, shape [N] when bs == 1, else [N, bs] (PETSc Vec, doubles). The
 /// dataset carries the string attribute "units" (SI, UDUNITS spelling: "m", "Pa", "m2/s";
