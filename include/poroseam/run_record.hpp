@@ -52,6 +52,9 @@ public:
 private:
   std::string text() const;
   bool write() const; ///< rank 0: the whole file, atomically; false if it could not
+  /// Collective: rank 0 writes; every rank fails together, naming the reason, if it could not.
+  PetscErrorCode writeOnRankZero(MPI_Comm comm) const;
+  mutable std::string write_error_; ///< why the last write() failed
 
   int rank_ = 0, size_ = 1;
   bool begun_ = false, finished_ = false;

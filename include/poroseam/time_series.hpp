@@ -44,13 +44,21 @@ public:
   /// One row: the step's own columns, then the boundary resultants (per boundary: dim forces,
   /// the flux with pressure, the interface outflow with interface pressure, then one outflow
   /// per interface with flow), the interface blocks and the probe values. Rank 0 writes and
-  /// flushes (a crashed run keeps its rows); other ranks return at once.
-  void write(const Scene &scene, const StepRow &row, const std::vector<double> &boundaries,
-             const std::vector<double> &interfaces, const std::vector<double> &probes);
+  /// flushes (a crashed run keeps its rows). Collective on open()'s comm: a row that rank 0
+  /// cannot write whole (a full disk) is taken back and every rank fails with one line.
+  PetscErrorCode write(const Scene &scene, const StepRow &row,
+                       const std::vector<double> &boundaries, const std::vector<double> &interfaces,
+                       const std::vector<double> &probes);
   void close();
 
 private:
+  /// Rank 0: `text` at the end of the file with write(2); on failure the file is cut back to
+  /// its length before, and the reason returned ("" when written).
+  std::string appendRow(const std::string &text);
+
   FILE *file_ = nullptr;
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  std::string path_;
 };
 
 } // namespace poroseam

@@ -1,5 +1,6 @@
 // poroseam: hydro-mechanical finite elements for saturated soils, on PETSc.
 //   mpiexec -n 2 poroseam -options_file options/<scene>.opts [PETSc options]
+#include "poroseam/output_directory.hpp"
 #include "poroseam/run_options.hpp"
 #include "poroseam/scene.hpp"
 #include "poroseam/simulation.hpp"
@@ -158,9 +159,11 @@ int main(int argc, char **argv)
   // step taken) and PETSc lists every option, poroseam's and its own, with its value.
   if (help_requested && !has_mesh) poroseam::printSceneHelp(PETSC_COMM_WORLD);
   PetscErrorCode error = 0;
+  poroseam::OutputDirectoryLock lock; // held until the process ends
   if (!help_requested || has_mesh) {
     error = poroseam::checkNumericOptions(PETSC_COMM_WORLD);
     if (!error && !help_requested) error = poroseam::checkOutputDirectory(PETSC_COMM_WORLD);
+    if (!error && !help_requested) error = lock.acquire(PETSC_COMM_WORLD);
     if (!error) error = poroseam::runSimulation(PETSC_COMM_WORLD);
   }
   const bool collective =

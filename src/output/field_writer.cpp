@@ -27,6 +27,7 @@
 #include <petscviewerhdf5.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -104,9 +105,14 @@ struct FieldWriter::Impl {
   DM dm = nullptr;
   PetscViewer viewer = nullptr;
   std::string h5name; // file name relative to the XDMF file
+  std::string h5Path;
+  std::string dir;
   std::string xmfPath;
-  PetscInt dim = 0;  // topological dimension
-  PetscInt cdim = 0; // coordinate dimension
+  bool failed = false;          // a write failed (agreed by every rank): close without writing more
+  xdmf::Rendezvous closing;     // for a close from the destructor
+  PetscInt test_fail_rank = -2; // -test_io_fail_rank: this rank's writes fail (-1: every rank)
+  PetscInt dim = 0;             // topological dimension
+  PetscInt cdim = 0;            // coordinate dimension
   DMPolytopeType cellType = DM_POLYTOPE_UNKNOWN;
   PetscInt corners = 0;
   PetscInt numCells = 0;    // global number of written cells
@@ -125,6 +131,10 @@ struct FieldWriter::Impl {
   PetscErrorCode cellIndex(const std::vector<PetscInt> &cells, std::vector<size_t> &index) const;
 
   PetscErrorCode writeXdmf();
+  /// The datasets of one write() (collective), flushed.
+  PetscErrorCode writeStep(double time, const std::vector<PetscScalar> &disp,
+                           const std::vector<PetscScalar> &pres,
+                           const std::vector<PetscScalar> &excess, const CellFields *cells);
   PetscErrorCode writeVertexVec(const char *group, const std::string &name, PetscInt bs,
                                 const std::vector<PetscScalar> &values, const char *units,
                                 double time, bool withTime);
@@ -246,7 +256,9 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
       << "  </Domain>\n"
       << "</Xdmf>\n";
   }
+  failed = true; // until the index is written: a close after this error writes nothing more
   PetscCall(xdmf::replaceFile(comm, xmfPath, x.str(), "FieldWriter"));
+  failed = false;
   PetscFunctionReturn(0);
 }
 
@@ -254,7 +266,14 @@ FieldWriter::~FieldWriter()
 {
   if (impl_) {
     // Errors cannot propagate from a destructor; close() is expected to be called explicitly.
-    if (impl_->viewer) (void)close();
+    // Here the run is ending in an error: close the file on every rank together, quietly (the
+    // error has been reported), if every rank is here within 20 s; after an error on one rank
+    // only, the others never come (main.cpp then ends the run with MPI_Abort).
+    if (impl_->viewer && impl_->closing.allThere(20.0) &&
+        !PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)) {
+      (void)close();
+      (void)PetscPopErrorHandler();
+    }
     delete impl_;
     impl_ = nullptr;
   }
@@ -288,6 +307,15 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   PetscCall(xdmf::createDirectory(comm, dir, "FieldWriter"));
   const std::string prefix = dir.empty() ? basename : dir + "/" + basename;
   im.h5name = basename + ".h5";
+  im.h5Path = prefix + ".h5";
+  PetscCall(im.closing.init(comm));
+  im.dir = dir;
+  PetscCall(
+      PetscOptionsGetInt(nullptr, nullptr, "-test_io_fail_rank", &im.test_fail_rank, nullptr));
+  { // read where an error needs it (xdmf::agreeOn); here too, so that it is never "unused"
+    PetscReal grace;
+    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-io_agreement_timeout", &grace, nullptr));
+  }
   im.xmfPath = prefix + ".xmf";
 
   PetscCall(PetscObjectReference((PetscObject)solution_dm));
@@ -452,11 +480,16 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   // A restarted run appends: PETSc's HDF5 viewer overwrites datasets that exist (the same
   // geometry and topology; field times after the checkpoint), so no stale time survives.
   if (resume) im.times = *resume;
-  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(),
-                                resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
-  PetscCall(im.writeVertexVec("/geometry", "vertices", im.cdim, xyz, "m", 0.0, false));
-  PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.corners, cells, "1"));
-  PetscCall(PetscViewerFlush(im.viewer));
+  PetscCall(reserveSpace(comm, dir, im.h5Path, 8.0 * (xyz.size() + cells.size()), "the mesh"));
+  PetscCall(xdmf::agreed(comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(PetscViewerHDF5Open(comm, im.h5Path.c_str(),
+                                  resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
+    PetscCall(im.writeVertexVec("/geometry", "vertices", im.cdim, xyz, "m", 0.0, false));
+    PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.corners, cells, "1"));
+    PetscCall(PetscViewerFlush(im.viewer));
+    PetscFunctionReturn(0);
+  }));
   PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
 }
@@ -516,6 +549,38 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
   PetscCall(VecRestoreArrayRead(local_solution, &sol));
   if (local_initial) PetscCall(VecRestoreArrayRead(local_initial, &init));
 
+  PetscCheck(!im.failed, im.comm, PETSC_ERR_ARG_WRONGSTATE, "FieldWriter::write after a failure");
+  double bytes = 8.0 * (disp.size() + pres.size() + excess.size());
+  if (cells)
+    for (const CellField &f : cells->fields)
+      bytes += 8.0 * f.values.size();
+  {
+    char what[64];
+    std::snprintf(what, sizeof what, "the fields at t = %g s", time);
+    PetscCall(reserveSpace(im.comm, im.dir, im.h5Path, bytes, what));
+  }
+  PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscMPIInt rank;
+    PetscFunctionBeginUser;
+    PetscCallMPI(MPI_Comm_rank(im.comm, &rank));
+    // Test hook standing in for a write refused on one rank (tests/input/io_faults.py).
+    PetscCheck(im.test_fail_rank != rank && im.test_fail_rank != -1, PETSC_COMM_SELF,
+               PETSC_ERR_FILE_WRITE, "write refused (test hook -test_io_fail_rank)");
+    PetscCall(im.writeStep(time, disp, pres, excess, cells));
+    PetscFunctionReturn(0);
+  }));
+  im.times.push_back(time);
+  PetscCall(im.writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldWriter::Impl::writeStep(double time, const std::vector<PetscScalar> &disp,
+                                            const std::vector<PetscScalar> &pres,
+                                            const std::vector<PetscScalar> &excess,
+                                            const CellFields *cells)
+{
+  Impl &im = *this;
+  PetscFunctionBeginUser;
   const std::string step = std::to_string(im.times.size());
   PetscCall(im.writeVertexVec("/fields/displacement", step, 3, disp, "m", time, true));
   if (im.presField >= 0) {
@@ -558,8 +623,6 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
     im.cellNames = names;
   }
   PetscCall(PetscViewerFlush(im.viewer));
-  im.times.push_back(time);
-  PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
 }
 
@@ -594,9 +657,16 @@ PetscErrorCode FieldWriter::writeRegions(const std::vector<PetscInt> &cells,
   std::string list;
   for (size_t r = 0; r < names.size(); ++r)
     list += (r ? "," : "") + names[r];
-  PetscCall(xdmf::writeInts(im.viewer, im.comm, "/cell_fields", "region", 1, ids, "1"));
-  PetscCall(xdmf::writeText(im.viewer, "/cell_fields/region", "names", list));
-  PetscCall(PetscViewerFlush(im.viewer));
+  PetscCheck(!im.failed, im.comm, PETSC_ERR_ARG_WRONGSTATE, "FieldWriter: write after a failure");
+  PetscCall(
+      reserveSpace(im.comm, im.dir, im.h5Path, 8.0 * ids.size() + list.size(), "the cell regions"));
+  PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(xdmf::writeInts(im.viewer, im.comm, "/cell_fields", "region", 1, ids, "1"));
+    PetscCall(xdmf::writeText(im.viewer, "/cell_fields/region", "names", list));
+    PetscCall(PetscViewerFlush(im.viewer));
+    PetscFunctionReturn(0);
+  }));
   im.regions = true;
   PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
@@ -606,11 +676,23 @@ PetscErrorCode FieldWriter::close()
 {
   PetscFunctionBeginUser;
   if (!impl_ || !impl_->viewer) PetscFunctionReturn(0);
-  PetscCall(PetscViewerDestroy(&impl_->viewer));
-  PetscCall(impl_->writeXdmf());
-  PetscCall(DMDestroy(&impl_->dm));
-  PetscCall(impl_->vertexOrder.destroy());
-  PetscCall(impl_->cellOrder.destroy());
+  Impl &im = *impl_;
+  if (im.failed) { // the index names what the file holds; the error is on its way up
+    PetscCall(PetscViewerDestroy(&im.viewer));
+    PetscCall(DMDestroy(&im.dm));
+    PetscCall(im.vertexOrder.destroy());
+    PetscCall(im.cellOrder.destroy());
+    PetscFunctionReturn(0);
+  }
+  PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(PetscViewerDestroy(&im.viewer));
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(im.writeXdmf());
+  PetscCall(DMDestroy(&im.dm));
+  PetscCall(im.vertexOrder.destroy());
+  PetscCall(im.cellOrder.destroy());
   PetscFunctionReturn(0);
 }
 

@@ -60,6 +60,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace poroseam {
@@ -88,6 +89,9 @@ struct InterfaceWriter::Impl {
   PetscViewer viewer = nullptr;
   std::string h5name = "interfaces.h5";
   std::string xmfPath[2]; // interface_cells.xmf, interface_points.xmf
+  std::string h5Path, dir;
+  bool failed = false;      // a write failed (agreed by every rank): close without writing more
+  xdmf::Rendezvous closing; // for a close from the destructor
   std::vector<double> times;
 
   // Set at the first write.
@@ -110,6 +114,9 @@ struct InterfaceWriter::Impl {
                                         double time);
   std::vector<Attribute> attributes(bool cells) const;
   PetscErrorCode writeXdmf();
+  /// The values of one write() (collective), flushed.
+  PetscErrorCode writeStep(const std::vector<CellRecord> &cells,
+                           const std::vector<PointRecord> &points, double time);
   const char *units(const std::string &name) const
   {
     return unitsOf(name, dim, scene->axisymmetric);
@@ -495,7 +502,9 @@ PetscErrorCode InterfaceWriter::Impl::writeXdmf()
       x << "  </Domain>\n"
         << "</Xdmf>\n";
     }
+    failed = true; // until the index is written: a close after this error writes nothing more
     PetscCall(xdmf::replaceFile(comm, xmfPath[grid], x.str(), kWho));
+    failed = false;
   }
   PetscFunctionReturn(0);
 }
@@ -504,7 +513,14 @@ InterfaceWriter::~InterfaceWriter()
 {
   if (impl_) {
     // Errors cannot propagate from a destructor; close() is expected to be called explicitly.
-    if (impl_->viewer) (void)close();
+    // Here the run is ending in an error: close the file on every rank together, quietly (the
+    // error has been reported), if every rank is here within 20 s; after an error on one rank
+    // only, the others never come (main.cpp then ends the run with MPI_Abort).
+    if (impl_->viewer && impl_->closing.allThere(20.0) &&
+        !PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)) {
+      (void)close();
+      (void)PetscPopErrorHandler();
+    }
     delete impl_;
     impl_ = nullptr;
   }
@@ -535,8 +551,15 @@ PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const st
   // Resuming: the mesh is written again at the first write (PETSc's HDF5 viewer overwrites
   // existing datasets), values after the checkpoint's last time are overwritten.
   if (resume) im.times = *resume;
-  PetscCall(PetscViewerHDF5Open(comm, (prefix + ".h5").c_str(),
-                                resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
+  im.h5Path = prefix + ".h5";
+  PetscCall(im.closing.init(comm));
+  im.dir = dir;
+  PetscCall(xdmf::agreed(comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(PetscViewerHDF5Open(comm, im.h5Path.c_str(),
+                                  resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
+    PetscFunctionReturn(0);
+  }));
   // (The interrupted run's index stays until the first write knows the mesh again.)
   if (!resume) PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
@@ -550,19 +573,20 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
              "InterfaceWriter::write called before open");
   Impl &im = *impl_;
   if (!im.enabled) PetscFunctionReturn(0);
-  PetscCheck(im.viewer, im.comm, PETSC_ERR_ARG_WRONGSTATE, "InterfaceWriter::write after close");
+  PetscCheck(im.viewer && !im.failed, im.comm, PETSC_ERR_ARG_WRONGSTATE,
+             "InterfaceWriter::write after close or a failure");
 
   std::vector<CellRecord> cells;
   std::vector<PointRecord> points;
   PetscCall(interface_output::collect(mech, im.dim, local_solution, rates, cells, points));
+  // The serial point numbers that order the output (collective, so outside the agreed write).
+  std::vector<PetscInt> serial;
   if (!im.mesh_written) {
     DM dm;
-    std::vector<PetscInt> serial;
     PetscCall(VecGetDM(local_solution, &dm));
     PetscCheck(dm, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
                "InterfaceWriter::write: the solution vector has no DM");
     PetscCall(serialPointNumbers(dm, serial));
-    PetscCall(im.writeMesh(cells, points, serial));
   } else {
     int same = cells.size() == im.local_cells.size(), all;
     for (size_t i = 0; same && i < cells.size(); ++i)
@@ -572,6 +596,29 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
     PetscCheck(all, im.comm, PETSC_ERR_ARG_WRONGSTATE,
                "InterfaceWriter: the interface cells changed since the first write");
   }
+  {
+    // At most some 40 values per point and cell node, and the mesh at the first write.
+    const double bytes = 8.0 * 64.0 * (double)(cells.size() + points.size());
+    char what[64];
+    std::snprintf(what, sizeof what, "the interface fields at t = %g s", time);
+    PetscCall(reserveSpace(im.comm, im.dir, im.h5Path, bytes, what));
+  }
+  PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (!im.mesh_written) PetscCall(im.writeMesh(cells, points, serial));
+    PetscCall(im.writeStep(cells, points, time));
+    PetscFunctionReturn(0);
+  }));
+  im.times.push_back(time);
+  PetscCall(im.writeXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InterfaceWriter::Impl::writeStep(const std::vector<CellRecord> &cells,
+                                                const std::vector<PointRecord> &points, double time)
+{
+  Impl &im = *this;
+  PetscFunctionBeginUser;
   if (im.num_cells > 0) {
     const int t = im.dim - 1;
     std::vector<Values> cv, pv;
@@ -585,8 +632,6 @@ PetscErrorCode InterfaceWriter::write(double time, const InterfaceAssembly &mech
     PetscCall(im.writeNodeDisplacements(cells, step, time));
     PetscCall(PetscViewerFlush(im.viewer));
   }
-  im.times.push_back(time);
-  PetscCall(im.writeXdmf());
   PetscFunctionReturn(0);
 }
 
@@ -594,7 +639,16 @@ PetscErrorCode InterfaceWriter::close()
 {
   PetscFunctionBeginUser;
   if (!impl_ || !impl_->viewer) PetscFunctionReturn(0);
-  PetscCall(PetscViewerDestroy(&impl_->viewer));
+  Impl &im = *impl_;
+  if (im.failed) { // the indexes name what the file holds; the error is on its way up
+    PetscCall(PetscViewerDestroy(&im.viewer));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(PetscViewerDestroy(&im.viewer));
+    PetscFunctionReturn(0);
+  }));
   // A resumed writer that wrote nothing does not know the mesh: keep the existing index.
   if (impl_->mesh_written || impl_->times.empty()) PetscCall(impl_->writeXdmf());
   for (OutputOrder *o : {&impl_->cell_order, &impl_->node_order, &impl_->point_order})

@@ -3,6 +3,9 @@
 
 #include "poroseam/run_record.hpp"
 
+#include "file_replace.hpp"
+#include "poroseam/collective_check.hpp"
+
 #include "poroseam_version.inc" // POROSEAM_VERSION, POROSEAM_GIT_COMMIT (cmake/version.cmake)
 
 #include <algorithm>
@@ -130,9 +133,7 @@ PetscErrorCode RunRecord::begin(MPI_Comm comm, const std::string &output_dir, bo
     old << in.rdbuf();
     if (old.str().rfind(kHeader, 0) == 0) earlier_ = old.str().substr(kHeader.size());
   }
-  int ok = rank_ != 0 || write();
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "cannot write %s (option -output_dir)", path_.c_str());
+  PetscCall(writeOnRankZero(comm));
   PetscFunctionReturn(0);
 }
 
@@ -141,9 +142,7 @@ PetscErrorCode RunRecord::setUnknowns(MPI_Comm comm,
 {
   PetscFunctionBeginUser;
   unknowns_ = fields;
-  int ok = rank_ != 0 || write();
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "cannot write %s", path_.c_str());
+  PetscCall(writeOnRankZero(comm));
   PetscFunctionReturn(0);
 }
 
@@ -181,9 +180,7 @@ PetscErrorCode RunRecord::finish(MPI_Comm comm, RunEnding ending, const std::str
                         "summary: wall time %.2f s (time steps %.2f s), peak memory %.1f MB per "
                         "rank (largest of %d), record in %s\n",
                         summary.wall, summary.stepping_wall, peak, size_, path_.c_str()));
-  int ok = rank_ != 0 || write();
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "cannot write %s", path_.c_str());
+  PetscCall(writeOnRankZero(comm));
   PetscFunctionReturn(0);
 }
 
@@ -261,16 +258,16 @@ std::string RunRecord::text() const
 
 bool RunRecord::write() const
 {
-  const std::string tmp = path_ + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << kHeader << earlier_ << text();
-    out.close();
-    if (!out) return false;
-  }
-  std::error_code failed;
-  std::filesystem::rename(tmp, path_, failed);
-  return !failed;
+  return replaceFileContents(path_, kHeader + earlier_ + text(), &write_error_);
+}
+
+PetscErrorCode RunRecord::writeOnRankZero(MPI_Comm comm) const
+{
+  PetscFunctionBeginUser;
+  // One line on every rank together (a full disk, run.yaml replaced by a directory).
+  const bool ok = rank_ != 0 || write();
+  PetscCall(checkOnAllRanks(comm, ok ? "" : "cannot write " + path_ + ": " + write_error_));
+  PetscFunctionReturn(0);
 }
 
 } // namespace poroseam

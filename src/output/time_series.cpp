@@ -4,10 +4,17 @@
 
 #include "poroseam/time_series.hpp"
 
+#include "file_replace.hpp"
+#include "poroseam/collective_check.hpp"
+
+#include <cerrno>
 #include <cstdlib>
-#include <filesystem>
+#include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace poroseam {
 
@@ -70,7 +77,10 @@ PetscErrorCode TimeSeries::open(MPI_Comm comm, const Scene &scene, const std::st
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   close();
+  comm_ = comm;
   const std::string path = dir + "/timeseries.csv";
+  path_ = path;
+  std::string why; // of status 1
   const std::string head = header(scene);
   // 0: fine, 1: cannot write, 2: missing or other columns, 3: rows missing (restart)
   int status = 0;
@@ -86,36 +96,36 @@ PetscErrorCode TimeSeries::open(MPI_Comm comm, const Scene &scene, const std::st
       kept += line + "\n", ++rows;
     }
     if (status == 0 && rows != resume_step + 1) status = 3;
-    if (status == 0) {
-      std::ofstream out(path + ".tmp", std::ios::trunc);
-      out << kept;
-      out.close();
-      std::error_code failed;
-      if (out) std::filesystem::rename(path + ".tmp", path, failed);
-      if (!out || failed) status = 1;
+    if (status == 0 && !replaceFileContents(path, kept, &why)) status = 1;
+  }
+  if (rank == 0 && status == 0) {
+    // Not through a symbolic link; rows go straight to the file (write(2), no stdio buffer),
+    // so that a failed row can be taken back whole (see write()).
+    const int fd = ::open(path.c_str(),
+                          O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC |
+                              (resume_step >= 0 ? O_APPEND : O_TRUNC),
+                          0644);
+    if (fd < 0 || !(file_ = fdopen(fd, resume_step >= 0 ? "a" : "w"))) {
+      status = 1, why = std::strerror(errno);
+      if (fd >= 0) ::close(fd);
+    } else if (resume_step < 0) {
+      why = appendRow(head + "\n");
+      if (!why.empty()) status = 1;
     }
   }
   if (rank == 0 && status == 0) {
-    file_ = std::fopen(path.c_str(), resume_step >= 0 ? "a" : "w");
-    if (!file_)
-      status = 1;
-    else if (resume_step < 0)
-      std::fprintf(file_, "%s\n", head.c_str());
-  }
-  if (rank == 0 && status == 0) {
     // The unit of every column, beside the file so that readers of the CSV see no change.
-    std::ofstream out(path + ".units.tmp", std::ios::trunc);
+    std::ostringstream out;
     out << "column,unit\n";
     for (const Column &c : columns(scene))
       out << c.name << "," << c.unit << "\n";
-    out.close();
-    std::error_code failed;
-    if (out) std::filesystem::rename(path + ".units.tmp", path + ".units", failed);
-    if (!out || failed) status = 1;
+    if (!replaceFileContents(path + ".units", out.str(), &why)) status = 1;
   }
   PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
-  PetscCheck(status != 1, comm, PETSC_ERR_FILE_OPEN, "cannot write %s (option -output_dir)",
-             path.c_str());
+  if (status == 1) {
+    close();
+    PetscCall(checkOnAllRanks(comm, rank == 0 ? "cannot write " + path + ": " + why : ""));
+  }
   PetscCheck(status != 2, comm, PETSC_ERR_USER_INPUT,
              "-restart: %s is missing or has other columns than this scene writes: restart "
              "with the scene of the interrupted run",
@@ -125,29 +135,73 @@ PetscErrorCode TimeSeries::open(MPI_Comm comm, const Scene &scene, const std::st
   PetscFunctionReturn(0);
 }
 
-void TimeSeries::write(const Scene &scene, const StepRow &row,
-                       const std::vector<double> &boundaries, const std::vector<double> &interfaces,
-                       const std::vector<double> &probes)
+std::string TimeSeries::appendRow(const std::string &text)
 {
-  if (!file_) return;
-  const int dim = scene.dim;
-  std::fprintf(file_, "%d,%.10e,%.10e,%.6g,%d,%d,%d,%.4e", row.step, row.time, row.dt, row.load,
-               row.newton, row.krylov, row.rejected, row.wall);
-  const int per = dim + 1 + (scene.hasInterfacePressure() ? 1 : 0);
-  for (size_t b = 0; b < scene.boundaries.size(); ++b) {
-    for (int d = 0; d < dim; ++d)
-      std::fprintf(file_, ",%.10e", boundaries[b * per + d]);
-    if (scene.hasPressure()) std::fprintf(file_, ",%.10e", boundaries[b * per + dim]);
-    if (scene.hasInterfacePressure()) std::fprintf(file_, ",%.10e", boundaries[b * per + dim + 1]);
+  const int fd = fileno(file_);
+  struct stat st;
+  if (fstat(fd, &st) != 0) return std::strerror(errno);
+  for (size_t done = 0; done < text.size();) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string why = std::strerror(n < 0 ? errno : ENOSPC);
+      // Whole rows only: what part of this one reached the file goes again.
+      if (ftruncate(fd, st.st_size) != 0) return why + " (and a partial row remains)";
+      return why;
+    }
+    done += (size_t)n;
   }
-  for (double v : interfaces)
-    std::fprintf(file_, ",%.10e", v);
-  for (size_t i = 0, k = scene.boundaries.size() * per; i < scene.interfaces.size(); ++i)
-    if (scene.interfaces[i].flow) std::fprintf(file_, ",%.10e", boundaries[k + i]);
-  for (double v : probes)
-    std::fprintf(file_, ",%.12e", v);
-  std::fprintf(file_, "\n");
-  std::fflush(file_);
+  return "";
+}
+
+PetscErrorCode TimeSeries::write(const Scene &scene, const StepRow &row,
+                                 const std::vector<double> &boundaries,
+                                 const std::vector<double> &interfaces,
+                                 const std::vector<double> &probes)
+{
+  PetscFunctionBeginUser;
+  if (comm_ == MPI_COMM_NULL) PetscFunctionReturn(0); // not opened
+  std::string error;
+  if (file_) {
+    std::string text;
+    char number[64];
+    auto add = [&](const char *format, double v) {
+      std::snprintf(number, sizeof number, format, v);
+      text += number;
+    };
+    const int dim = scene.dim;
+    std::snprintf(number, sizeof number, "%d,", row.step);
+    text += number;
+    add("%.10e,", row.time);
+    add("%.10e,", row.dt);
+    add("%.6g,", row.load);
+    std::snprintf(number, sizeof number, "%d,%d,%d,", row.newton, row.krylov, row.rejected);
+    text += number;
+    add("%.4e", row.wall);
+    const int per = dim + 1 + (scene.hasInterfacePressure() ? 1 : 0);
+    for (size_t b = 0; b < scene.boundaries.size(); ++b) {
+      for (int d = 0; d < dim; ++d)
+        add(",%.10e", boundaries[b * per + d]);
+      if (scene.hasPressure()) add(",%.10e", boundaries[b * per + dim]);
+      if (scene.hasInterfacePressure()) add(",%.10e", boundaries[b * per + dim + 1]);
+    }
+    for (double v : interfaces)
+      add(",%.10e", v);
+    for (size_t i = 0, k = scene.boundaries.size() * per; i < scene.interfaces.size(); ++i)
+      if (scene.interfaces[i].flow) add(",%.10e", boundaries[k + i]);
+    for (double v : probes)
+      add(",%.12e", v);
+    text += "\n";
+    const std::string why = appendRow(text);
+    if (!why.empty()) {
+      error = "cannot write the row of step " + std::to_string(row.step) + " to " + path_ + ": " +
+              why + "; the file holds every step before it";
+      close();
+    }
+  }
+  // Every rank learns whether rank 0 could: a full disk ends the run on all of them together.
+  PetscCall(checkOnAllRanks(comm_, error));
+  PetscFunctionReturn(0);
 }
 
 void TimeSeries::close()

@@ -1,11 +1,18 @@
 // Helpers shared by the HDF5 + XDMF writers (see xdmf.hpp).
 #include "xdmf.hpp"
 
+#include "file_replace.hpp"
+
+#include "poroseam/collective_check.hpp"
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
-#include <fstream>
 #include <system_error>
+#include <unistd.h>
 
 namespace poroseam::xdmf {
 
@@ -29,34 +36,100 @@ PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char
     if (ec) ok = 0;
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "%s: cannot create directory %s", who, dir.c_str());
+  PetscCheck(ok, comm, kAgreedIoError, "%s: cannot create directory %s", who, dir.c_str());
   PetscFunctionReturn(0);
+}
+
+PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode error, bool *failed)
+{
+  PetscFunctionBeginUser;
+  std::string message;
+  if (error) {
+    const char *text = nullptr;
+    char *specific = nullptr;
+    PetscErrorMessage(error, &text, &specific);
+    message = "cannot write " + file + ": " +
+              (specific && *specific ? specific
+               : text                ? text
+                                     : "error") +
+              " (disk full, quota exceeded or a read-only file system?)";
+  }
+  int mine = error != 0, any = 0;
+  MPI_Request request;
+  PetscCallMPI(MPI_Iallreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm, &request));
+  if (!error) {
+    PetscCallMPI(MPI_Wait(&request, MPI_STATUS_IGNORE));
+  } else {
+    // The other ranks may never come: an HDF5 call that failed here only can leave them
+    // inside the library's own collective calls, waiting for this rank. After a grace
+    // (-io_agreement_timeout, seconds) this rank says what failed and ends them all: the one
+    // case where a run ends in MPI_Abort, rather than a hang.
+    PetscReal grace = 120.0;
+    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-io_agreement_timeout", &grace, nullptr));
+    const double start = MPI_Wtime();
+    for (int done = 0; !done;) {
+      PetscCallMPI(MPI_Test(&request, &done, MPI_STATUS_IGNORE));
+      if (done) break;
+      if (MPI_Wtime() - start > grace) {
+        std::fprintf(stderr,
+                     "poroseam: error: %s; the other ranks did not end with this one within "
+                     "%g s (-io_agreement_timeout): ending the run\n",
+                     message.c_str(), (double)grace);
+        std::fflush(stderr);
+        MPI_Abort(comm, 1);
+      }
+      usleep(10000);
+    }
+  }
+  if (!any) PetscFunctionReturn(0);
+  *failed = true;
+  PetscCall(checkOnAllRanks(comm, message));
+  PetscFunctionReturn(0);
+}
+
+Rendezvous::~Rendezvous()
+{
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (comm_ != MPI_COMM_NULL && !pending_ && !finalized) MPI_Comm_free(&comm_);
+}
+
+PetscErrorCode Rendezvous::init(MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  if (comm_ == MPI_COMM_NULL) PetscCallMPI(MPI_Comm_dup(comm, &comm_));
+  PetscFunctionReturn(0);
+}
+
+bool Rendezvous::allThere(double seconds)
+{
+  if (comm_ == MPI_COMM_NULL) return false;
+  MPI_Request request;
+  if (MPI_Ibarrier(comm_, &request) != MPI_SUCCESS) return false;
+  const double start = MPI_Wtime();
+  for (int done = 0;;) {
+    if (MPI_Test(&request, &done, MPI_STATUS_IGNORE) != MPI_SUCCESS) return false;
+    if (done) return true;
+    if (MPI_Wtime() - start > seconds) {
+      pending_ = true;
+      return false;
+    }
+    usleep(1000);
+  }
 }
 
 PetscErrorCode replaceFile(MPI_Comm comm, const std::string &path, const std::string &text,
                            const char *who)
 {
   PetscMPIInt rank;
-  int ok = 1;
+  bool ok = true;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    const std::string tmp = path + ".tmp";
-    {
-      std::ofstream out(tmp, std::ios::trunc);
-      out << text;
-      out.close();
-      if (!out) ok = 0;
-    }
-    if (ok) {
-      std::error_code ec;
-      std::filesystem::rename(tmp, path, ec);
-      if (ec) ok = 0;
-    }
-  }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "%s: cannot write %s", who, path.c_str());
+  std::string why;
+  if (rank == 0) ok = replaceFileContents(path, text, &why);
+  (void)who; // the path says which file; the writer's name would say nothing to a user
+  PetscCall(checkOnAllRanks(comm, ok ? "" : "cannot write " + path + ": " + why));
   PetscFunctionReturn(0);
 }
 

@@ -1,5 +1,7 @@
 #include "checkpoint.hpp"
 
+#include "poroseam/disk_space.hpp"
+
 #include <cstdio>
 #include <filesystem>
 #include <petscviewerhdf5.h>
@@ -136,6 +138,13 @@ PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
   PetscCall(layoutOf(run, X, layout));
   const std::vector<double> history = run.problem.interfaces().committedHistory();
   const std::vector<double> times = run.fields.times();
+  { // a full disk ends the run here, on every rank, before a partial checkpoint
+    PetscInt n;
+    PetscCall(VecGetLocalSize(X, &n));
+    const double values = 2.0 * n + history.size() + run.problem.skeletonHistoryValues() + 3;
+    PetscCall(reserveSpace(comm, dir, *path, 8.0 * (values + (rank == 0 ? times.size() : 0)),
+                           "the checkpoint of step " + std::to_string(run.step)));
+  }
 
   PetscViewer viewer;
   PetscCall(PetscViewerHDF5Open(comm, partial.c_str(), FILE_MODE_WRITE, &viewer));

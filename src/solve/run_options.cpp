@@ -5,6 +5,9 @@
 #include "poroseam/scene.hpp"
 
 #include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,7 +38,8 @@ const char *const kIntegerOptions[] = {"ts_max_steps",
                                        "pc_hypre_boomeramg_max_levels",
                                        "solver_auto_threshold",
                                        "checkpoint_every",
-                                       "restart_step"};
+                                       "restart_step",
+                                       "test_io_fail_rank"};
 /// Real options, likewise.
 const char *const kRealOptions[] = {"ts_dt",
                                     "ts_max_time",
@@ -56,6 +60,7 @@ const char *const kRealOptions[] = {"ts_dt",
                                     "ksp_atol",
                                     "ksp_divtol",
                                     "test_fail_dt_above",
+                                    "io_agreement_timeout",
                                     "pc_factor_shift_amount"};
 
 /// Whether `option` is `base` or `<prefix>_base`.
@@ -155,10 +160,11 @@ PetscErrorCode checkOutputDirectory(MPI_Comm comm)
       error = what + ": it exists and is not a directory";
     } else {
       const std::string probe = dir + "/.poroseam-write-test-" + std::to_string(getpid());
-      std::ofstream out(probe);
-      out << "poroseam\n";
-      out.close();
-      if (!out) error = what + ": cannot create a file in it";
+      const int fd =
+          open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+      if (fd < 0 || write(fd, "poroseam\n", 9) != 9)
+        error = what + ": cannot create a file in it (" + std::strerror(errno) + ")";
+      if (fd >= 0) close(fd);
       std::filesystem::remove(probe, failed);
     }
   }

@@ -116,10 +116,10 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
   PetscCall(boundaryResultants(run, t, dt, local, rate, resultants));
   PetscCall(interfaceResultants(run, local, InterfaceRates{rate, dt}, interface));
   PetscCall(run.probes.evaluate(local, probes));
-  run.series.write(run.scene,
-                   StepRow{run.step, t, dt, run.problem.loadFactor(t), (int)newton, (int)ksp,
-                           (int)rejected, wall},
-                   resultants, interface, probes);
+  PetscCall(run.series.write(run.scene,
+                             StepRow{run.step, t, dt, run.problem.loadFactor(t), (int)newton,
+                                     (int)ksp, (int)rejected, wall},
+                             resultants, interface, probes));
   // The final state always: after cut-backs the step count need not be a multiple of
   // output_every (a run to 3000 s ended with its last field at 2920 s).
   if (run.scene.output_every > 0 && (run.step % run.scene.output_every == 0 || last)) {
