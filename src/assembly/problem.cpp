@@ -36,8 +36,9 @@ PetscErrorCode Problem::elementIndex(DMPolytopeType type, int *index)
   PetscFunctionBeginUser;
   auto it = element_of_type_.find((int)type);
   if (it == element_of_type_.end()) {
+    // Bulk cells and their boundary faces carry the scene's displacement order.
     ReferenceElement e;
-    PetscCall(ReferenceElement::create(type, &e));
+    PetscCall(ReferenceElement::create(type, &e, scene_->displacement_order));
     elements_.push_back(e);
     it = element_of_type_.emplace((int)type, (int)elements_.size() - 1).first;
   }
@@ -283,6 +284,7 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   PetscInt cStart, cEnd;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   std::string error;
+  PointGeometry g;
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(dm, c, &ct));
@@ -308,7 +310,6 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
       top[region] = std::max(top[region], (double)x[a]);
     }
     double volume = 0.0;
-    PointGeometry g;
     for (int q = 0; q < e.num_quadrature; ++q) {
       mapQuadraturePoint(e, x, q, g);
       volume += g.weight;
@@ -560,6 +561,7 @@ void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
       scene_->axisymmetric};
   for (int d = 0; d < dim_; ++d)
     kernel.gravity[d] = gravityVector(d);
+  kernel.work = &w.kernel;
   if (history) {
     kernel.history = &skeleton_committed_[cell.history];
     kernel.responses = responses;
@@ -618,10 +620,11 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
     PetscScalar *x = nullptr;
     PetscCall(DMPlexVecGetClosure(dm_, s, local, face.face, &n, &x));
     F.assign(n, 0.0);
-    const int nv = e.num_vertices, nu = nv * dim_;
+    // Face closure: nn * dim displacements (node basis), then nv pressures (vertex basis).
+    const int nv = e.num_vertices, nn = e.num_nodes, nu = nn * dim_;
     const int np = (int)n - nu;
     for (int q = 0; q < e.num_quadrature; ++q) {
-      const double *phi = &e.basis[q * nv];
+      const double *phi = &e.basis[q * nv], *N = &e.node_basis[q * nn];
       double w = surfaceWeight(e, xc, dim_, q);
       if (scene_->axisymmetric) {
         double r = 0.0;
@@ -637,18 +640,18 @@ PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
           for (int d = 0; d < dim_; ++d)
             xq[d] += phi[a] * xc[a * dim_ + d];
         const double pw = std::max(0.0, initialPressure(xq));
-        for (int a = 0; a < nv; ++a)
+        for (int a = 0; a < nn; ++a)
           for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] += w * phi[a] * pw * face.normal[i];
+            F[a * dim_ + i] += w * N[a] * pw * face.normal[i];
         continue;
       }
-      for (int a = 0; a < nv; ++a) {
-        if (bc->kind == BcKind::traction)
+      if (bc->kind == BcKind::traction)
+        for (int a = 0; a < nn; ++a)
           for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] -= w * phi[a] * bc->value[i] * factor;
-        else if (bc->kind == BcKind::flux && np == nv)
+            F[a * dim_ + i] -= w * N[a] * bc->value[i] * factor;
+      else if (bc->kind == BcKind::flux && np == nv)
+        for (int a = 0; a < nv; ++a)
           F[nu + a] += mode.mass_scale * w * phi[a] * bc->value[0] * factor;
-      }
     }
     PetscCall(DMPlexVecRestoreClosure(dm_, s, local, face.face, &n, &x));
     PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, face.face, &nc, &xc));

@@ -32,11 +32,14 @@ PetscErrorCode collectBoundaryDofs(Run &run)
     PetscCall(ISGetIndices(points, &idx));
     for (PetscInt i = 0; i < n; ++i) {
       const PetscInt v = idx[i];
-      if (v < vStart || v >= vEnd) continue;
-      PetscInt off, dof = 0;
+      // Every point with displacement unknowns (vertices; edges and faces at order 2): a
+      // reaction summed over vertices only would drop the edge unknowns' share.
+      PetscInt off, dof = 0, udof = 0;
+      PetscCall(PetscSectionGetFieldDof(s, v, kDisplacementField, &udof));
+      if (!udof) continue;
       PetscCall(PetscSectionGetFieldOffset(s, v, kDisplacementField, &off));
       run.boundary_dofs[b].displacement.push_back(off);
-      if (numFields > kPressureField)
+      if (numFields > kPressureField && v >= vStart && v < vEnd)
         PetscCall(PetscSectionGetFieldDof(s, v, kPressureField, &dof));
       if (dof) {
         PetscCall(PetscSectionGetFieldOffset(s, v, kPressureField, &off));
