@@ -4,3 +4,7 @@
 set_tests_properties(unit.test_order_mms PROPERTIES LABELS "unit;order")
 set_tests_properties(unit.test_element_order PROPERTIES LABELS "unit;order")
 set_tests_properties(unit.test_biot_jacobian PROPERTIES LABELS "unit;order")
+# Terzaghi's column at orders 1 and 2 against the closed form (consolidation, first undrained
+# step).
+poroseam_scene_test(verification.order_terzaghi_2d "order;verification;terzaghi"
+                    verification/order_terzaghi.py)
