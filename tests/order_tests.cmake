@@ -8,3 +8,16 @@ set_tests_properties(unit.test_biot_jacobian PROPERTIES LABELS "unit;order")
 # step).
 poroseam_scene_test(verification.order_terzaghi_2d "order;verification;terzaghi"
                     verification/order_terzaghi.py)
+# Bad input of -displacement_order and the scenes order 2 refuses (tests/input/order_input.py,
+# one ctest per case; _np2 on 2 ranks).
+execute_process(COMMAND ${PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/input/order_input.py --list
+                OUTPUT_VARIABLE POROSEAM_ORDER_INPUT_CASES OUTPUT_STRIP_TRAILING_WHITESPACE)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+             ${CMAKE_CURRENT_SOURCE_DIR}/input/order_input.py)
+string(REPLACE "\n" ";" POROSEAM_ORDER_INPUT_CASES "${POROSEAM_ORDER_INPUT_CASES}")
+foreach(case ${POROSEAM_ORDER_INPUT_CASES})
+  poroseam_scene_test(input.${case} "input;order" input/order_input.py --case ${case})
+  if(case MATCHES "_np2$")
+    set_tests_properties(input.${case} PROPERTIES PROCESSORS 2)
+  endif()
+endforeach()
