@@ -21,3 +21,6 @@ foreach(case ${POROSEAM_ORDER_INPUT_CASES})
     set_tests_properties(input.${case} PROPERTIES PROCESSORS 2)
   endif()
 endforeach()
+# The geostatic initial state at order 2, 2D and 3D layered columns.
+poroseam_scene_test(verification.order_geostatic "order;verification;geostatic"
+                    verification/order_geostatic.py)
