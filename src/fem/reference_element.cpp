@@ -1,3 +1,7 @@
+// Lagrange elements from PETSc (PetscFECreateLagrange, PetscFECreateTabulation) with
+// quadrature from PetscDT, their basis functions put in DMPlex closure order; the geometry map
+// and physical gradients at quadrature points; the inverse map for locating points.
+// docs/elements.md says why each choice was made.
 #include "poroseam/reference_element.hpp"
 
 #include <algorithm>
