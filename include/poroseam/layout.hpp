@@ -1,5 +1,7 @@
 // Which unknowns exist where: the PetscSection of the solution, built from the scene.
-// Field 0 "displacement" (dim components) lives on every vertex; field 1 "pressure" only on
+// Field 0 "displacement" (dim components) lives on every vertex, and with
+// -displacement_order 2 on every edge and every quadrilateral and hexahedron too (one node
+// per point: P2 / Lagrange Q2, docs/elements.md); field 1 "pressure" (linear) only on
 // vertices of porous regions, and only when the scene is not drained; field 2
 // "interface_pressure" only on the lateral edges of cohesive cells of interfaces with flow.
 // Dirichlet conditions are section constraints, so constrained values never enter the global
@@ -30,6 +32,11 @@ std::string boundaryLabelName(const std::string &boundary);
 /// applies, shared by the section constraints, the boundary values and the reported outflows.
 PetscErrorCode lateralEdgesOnBoundary(DM dm, const std::string &boundary,
                                       std::vector<PetscInt> &edges);
+
+/// The scene's displacement order is one this build can compute with the scene's features:
+/// order 2 is refused (one line, PETSC_ERR_USER_INPUT) with interfaces, axisymmetry,
+/// plasticity or probes. Called by markLayoutLabels.
+PetscErrorCode checkElementOrder(MPI_Comm comm, const Scene &scene);
 
 /// Before distribution: marks the closure of porous cells and of every scene boundary.
 PetscErrorCode markLayoutLabels(DM dm, const Scene &scene);

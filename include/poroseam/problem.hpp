@@ -9,6 +9,7 @@
 #include "poroseam/closure_cache.hpp"
 #include "poroseam/geostatic.hpp"
 #include "poroseam/interface_assembly.hpp"
+#include "poroseam/kernel_work.hpp"
 #include "poroseam/log_events.hpp"
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
@@ -176,6 +177,7 @@ private:
   /// Work vectors of one cell, kept across the cells of an assembly loop.
   struct CellWork {
     std::vector<double> x, xdot, xc, F, K;
+    CellKernelWork kernel;
   };
   /// Bulk terms of cell i, its closure read through closures_ from the local arrays of the
   /// solution u, its rate u_t and the coordinates: w.F, and with `with_jacobian` w.K

@@ -1,6 +1,11 @@
-// Linear Lagrange elements (P1 on simplices, Q1 on tensor cells) on PETSc's reference cells,
-// with their quadrature rules. Basis functions are numbered like the vertices of the cell's
-// DMPlex closure, so a closure read from a vector lines up with them directly.
+// Lagrange elements of any order on PETSc's reference cells, with their quadrature rules, both
+// taken from PETSc (PetscFE / PetscDT, src/fem/reference_element.cpp). Two bases live on one
+// element: the vertex basis (linear: P1 on simplices, Q1 on tensor cells) that maps the
+// straight-sided cell and carries the pressure, and the node basis of the displacement
+// (order 1: the vertex basis again; order 2: P2 / Lagrange Q2). Basis functions are numbered
+// like the dofs of the cell's DMPlex closure (the cell itself, then its faces, edges and
+// vertices, one node per point at order <= 2), so a closure read from a vector lines up with
+// them directly; at order 1 this is the closure's vertex order. docs/elements.md says why.
 #pragma once
 
 #include <petscdm.h>
@@ -11,9 +16,12 @@ namespace poroseam {
 class ReferenceElement {
 public:
   /// Builds the element for a DMPlex cell type (segment, triangle, quadrilateral, tetrahedron,
-  /// hexahedron). Vertex coordinates are taken from DMPlexCreateReferenceCell.
-  static PetscErrorCode create(DMPolytopeType type, ReferenceElement *element);
-  /// The same element with the nodal (Newton-Cotes/Lobatto) rule: one point at every vertex,
+  /// hexahedron) with displacement basis of `order` (1 or 2). Vertex coordinates are taken from
+  /// DMPlexCreateReferenceCell, the bases from PetscFECreateLagrange, the quadrature from
+  /// PetscDTSimplexQuadrature / PetscDTGaussTensorQuadrature, exact for polynomials of degree
+  /// 2 * order on affine cells (the mass matrices of both bases).
+  static PetscErrorCode create(DMPolytopeType type, ReferenceElement *element, int order = 1);
+  /// The linear element with the nodal (Newton-Cotes/Lobatto) rule: one point at every vertex,
   /// equal weights. Exact for linear integrands; lumps interface tractions to the nodes.
   static PetscErrorCode createNodal(DMPolytopeType type, ReferenceElement *element);
 
@@ -26,22 +34,48 @@ public:
   int num_quadrature = 0;
   std::vector<double> quadrature_points;  ///< num_quadrature x dim
   std::vector<double> quadrature_weights; ///< sum = reference cell measure
-  /// Shape functions and their reference gradients tabulated at the quadrature points:
-  /// basis[q * num_vertices + a], basis_derivatives[(q * num_vertices + a) * dim + d].
+  /// Vertex (linear) shape functions and their reference gradients tabulated at the quadrature
+  /// points: basis[q * num_vertices + a], basis_derivatives[(q * num_vertices + a) * dim + d].
   std::vector<double> basis;
   std::vector<double> basis_derivatives;
 
-  /// Shape functions and reference gradients at an arbitrary reference point.
+  /// The displacement basis: `order`, its number of nodes (= num_vertices at order 1), the
+  /// nodes' reference coordinates (num_nodes x dim, closure order) and its tabulation at the
+  /// quadrature points, laid out like `basis`.
+  int order = 1;
+  int num_nodes = 0;
+  std::vector<double> node_coords;
+  std::vector<double> node_basis;
+  std::vector<double> node_basis_derivatives;
+
+  /// Vertex shape functions and reference gradients at an arbitrary reference point
+  /// (dphi may be null).
   void evaluate(const double xi[], double phi[], double dphi[]) const;
+  /// Node (displacement) shape functions and reference gradients at an arbitrary point.
+  void evaluateNodes(const double xi[], double phi[], double dphi[]) const;
+
+  /// Monomial expansions of both bases (for evaluation away from the quadrature points):
+  /// exponents[m * dim + d] of monomial m, coefficients [a * num_monomials + m]. Fitted to
+  /// PETSc's tabulation at set-up; the unit test checks both agree at the quadrature points.
+  struct Expansion {
+    int num_monomials = 0;
+    std::vector<int> exponents;
+    std::vector<double> coefficients;
+  };
+  Expansion vertex_expansion, node_expansion;
 };
 
-/// Geometry of one quadrature point of a physical cell.
+/// Geometry of one quadrature point of a physical cell. Keep one across the points and cells
+/// of a loop: its storage is sized for the element on first use and reused.
 struct PointGeometry {
-  double x[3] = {0, 0, 0};   ///< physical coordinates
-  double det_jacobian = 0.0; ///< d x / d xi
-  double weight = 0.0;       ///< quadrature weight * det_jacobian (measure of the point)
-  double grad_phi[8 * 3];    ///< physical gradients, [a * dim + d]
-  const double *phi = nullptr;
+  double x[3] = {0, 0, 0};          ///< physical coordinates
+  double det_jacobian = 0.0;        ///< d x / d xi
+  double weight = 0.0;              ///< quadrature weight * det_jacobian (measure of the point)
+  const double *phi = nullptr;      ///< vertex basis values (pressure, geometry)
+  const double *grad_phi = nullptr; ///< vertex basis physical gradients, [a * dim + d]
+  const double *node_phi = nullptr; ///< node (displacement) basis values
+  const double *grad_node_phi = nullptr; ///< node basis physical gradients, [a * dim + d]
+  std::vector<double> storage;           ///< holds the gradients
 };
 
 /// Maps quadrature point q of `element` to the physical cell with vertex coordinates

@@ -123,6 +123,9 @@ struct Scene {
   double fluid_density = 1000.0; ///< rho_w [kg/m3]
   double fluid_viscosity = 1e-3; ///< mu_w [Pa s]
   double stabilization_factor = 0.25;
+  /// Order of the displacement basis (-displacement_order): 1 equal-order linear elements
+  /// with the pressure stabilisation; 2 Taylor-Hood (P2/P1, Lagrange Q2/Q1), no stabilisation.
+  int displacement_order = 1;
 
   std::string output_dir = "output";
   int output_every = 1; ///< field output every n steps, 0 for none

@@ -145,10 +145,11 @@ PetscErrorCode Problem::addLoads(double t, double mass_scale, Vec f,
     PetscCall(DMPlexVecGetClosure(dm_, s, f, face.face, &n, &x));
     PetscCall(DMPlexVecRestoreClosure(dm_, s, f, face.face, &n, &x));
     F.assign(n, 0.0);
-    const int nv = e.num_vertices, nu = nv * dim_;
+    // Face closure: nn * dim displacements (node basis), then nv pressures (vertex basis).
+    const int nv = e.num_vertices, nn = e.num_nodes, nu = nn * dim_;
     const int np = (int)n - nu;
     for (int q = 0; q < e.num_quadrature; ++q) {
-      const double *phi = &e.basis[q * nv];
+      const double *phi = &e.basis[q * nv], *N = &e.node_basis[q * nn];
       double w = surfaceWeight(e, xc, dim_, q);
       if (scene_->axisymmetric) {
         double r = 0.0;
@@ -164,25 +165,25 @@ PetscErrorCode Problem::addLoads(double t, double mass_scale, Vec f,
           for (int d = 0; d < dim_; ++d)
             xq[d] += phi[a] * xc[a * dim_ + d];
         const double pw = std::max(0.0, initialPressure(xq));
-        for (int a = 0; a < nv; ++a)
+        for (int a = 0; a < nn; ++a)
           for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] += w * phi[a] * pw * face.normal[i];
+            F[a * dim_ + i] += w * N[a] * pw * face.normal[i];
         continue;
       }
-      for (int a = 0; a < nv; ++a) {
-        if (bc->kind == BcKind::traction)
+      if (bc->kind == BcKind::traction)
+        for (int a = 0; a < nn; ++a)
           for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] -= w * phi[a] * bc->value[i] * factor;
-        else if (bc->kind == BcKind::flux && np == nv)
+            F[a * dim_ + i] -= w * N[a] * bc->value[i] * factor;
+      else if (bc->kind == BcKind::flux && np == nv)
+        for (int a = 0; a < nv; ++a)
           F[nu + a] += mass_scale * w * phi[a] * bc->value[0] * factor;
-      }
     }
     PetscCall(DMPlexVecRestoreClosure(dm_, csec, coords, face.face, &nc, &xc));
     PetscCall(DMPlexVecSetClosure(dm_, s, f, face.face, F.data(), ADD_ALL_VALUES));
     if (totals && face.boundary >= 0) {
       // What the residual holds is minus the force on the body, plus the outflow.
       double *total = &(*totals)[face.boundary * (dim_ + 1)];
-      for (int a = 0; a < nv; ++a)
+      for (int a = 0; a < nn; ++a)
         for (int i = 0; i < dim_; ++i)
           total[i] -= F[a * dim_ + i];
       if (np == nv)

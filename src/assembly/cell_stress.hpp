@@ -31,8 +31,8 @@ inline void skeletonStress(const CellMaterial &m, const double strain[3][3],
 /// mesh's own space (area in 2D, axisymmetric too; volume in 3D), so that a field linear over
 /// an affine cell averages to its value at the centroid.
 ///   e, dim, axisymmetric: as CellKernel; m: the cell's material; with_pressure: the closure
-///   holds the pressures after the nv * dim displacements (CellKernel::with_pressure)
-///   coords: vertex coordinates (nv x dim); x: the closure values
+///   holds the nv pressures after the nn * dim displacements (CellKernel::with_pressure)
+///   coords: vertex coordinates (nv x dim); x: the closure values (nn: the element's nodes)
 ///   point_stress(q, xq, strain, stress): the effective stress at point q (position xq)
 ///   pressure0(xq): the pore pressure of a porous cell without pressure unknowns (drained)
 template <class PointStress, class InitialPressure>
@@ -42,25 +42,25 @@ CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisy
                                   InitialPressure &&pressure0)
 {
   CellStressState out{};
-  const int nv = e.num_vertices, nu = nv * dim;
+  const int nv = e.num_vertices, nn = e.num_nodes, nu = nn * dim;
   const double alpha = m.porous ? m.biot.biot_coefficient : 0.0;
   double measure = 0.0;
+  PointGeometry g;
   for (int q = 0; q < e.num_quadrature; ++q) {
-    PointGeometry g;
     mapQuadraturePoint(e, coords, q, g);
-    const double *phi = g.phi, *dphi = g.grad_phi;
+    const double *phi = g.phi, *N = g.node_phi, *dN = g.grad_node_phi;
     // eps = sym(grad u), plus the hoop strain u_r / r when axisymmetric.
     double eps[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    for (int a = 0; a < nv; ++a)
+    for (int a = 0; a < nn; ++a)
       for (int i = 0; i < dim; ++i)
         for (int j = 0; j < dim; ++j) {
-          const double v = 0.5 * x[a * dim + i] * dphi[a * dim + j];
+          const double v = 0.5 * x[a * dim + i] * dN[a * dim + j];
           eps[i][j] += v;
           eps[j][i] += v;
         }
     if (axisymmetric)
-      for (int a = 0; a < nv; ++a)
-        eps[2][2] += x[a * dim] * phi[a] / g.x[0];
+      for (int a = 0; a < nn; ++a)
+        eps[2][2] += x[a * dim] * N[a] / g.x[0];
     double stress[3][3];
     point_stress(q, g.x, eps, stress);
     double p = 0.0;

@@ -152,7 +152,7 @@ PetscErrorCode warnAboutPenalties(DM dm, const Scene &scene)
         both = false;
         break;
       }
-      double hs;
+      double hs = 0.0;
       PetscCall(heightOver(dm, cell, cone[side], scene.dim, &hs));
       h = std::min(h, hs);
       E[side] = scene.regions[r].young;

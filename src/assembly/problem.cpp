@@ -1,3 +1,7 @@
+// The problem's set-up: the bulk cells and their reference elements, the closure cache, the
+// geostatic column and its checks, the loaded faces (tractions, fluxes, water load) and the
+// constrained dofs. Part of Problem (problem.hpp); the states are in problem_state.cpp, the
+// assembly in problem_assembly.cpp.
 #include "poroseam/problem.hpp"
 
 #include "cell_kernel.hpp"
@@ -36,46 +40,14 @@ PetscErrorCode Problem::elementIndex(DMPolytopeType type, int *index)
   PetscFunctionBeginUser;
   auto it = element_of_type_.find((int)type);
   if (it == element_of_type_.end()) {
+    // Bulk cells and their boundary faces carry the scene's displacement order.
     ReferenceElement e;
-    PetscCall(ReferenceElement::create(type, &e));
+    PetscCall(ReferenceElement::create(type, &e, scene_->displacement_order));
     elements_.push_back(e);
     it = element_of_type_.emplace((int)type, (int)elements_.size() - 1).first;
   }
   *index = it->second;
   PetscFunctionReturn(0);
-}
-
-double Problem::gravityVector(int d) const
-{
-  return d == dim_ - 1 ? -scene_->gravity : 0.0;
-}
-
-double Problem::initialPressure(const double x[]) const
-{
-  if (scene_->gravity <= 0.0) return 0.0;
-  return physics::hydrostaticPressure(column_, x[dim_ - 1]);
-}
-
-void Problem::initialStress(const double x[], int region, double stress[3][3]) const
-{
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      stress[i][j] = 0.0;
-  const Region &r = scene_->regions[region];
-  // Structures (regions outside the ground column) start unstressed: their weight is a load.
-  if (!scene_->geostatic || !r.inGround()) return;
-  physics::geostaticStress(column_, x[dim_ - 1], r.k0, r.porous() ? r.biot_coefficient : 0.0, dim_,
-                           stress);
-}
-
-void Problem::initialTotalStress(const double x[], int region, double stress[3][3]) const
-{
-  initialStress(x, region, stress);
-  const Region &r = scene_->regions[region];
-  if (!scene_->geostatic || !r.inGround() || !r.porous()) return;
-  const double p = initialPressure(x);
-  for (int i = 0; i < 3; ++i)
-    stress[i][i] -= r.biot_coefficient * p;
 }
 
 PetscErrorCode Problem::setupGeostatic(MPI_Comm comm, const std::vector<double> &bottom,
@@ -237,6 +209,7 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
   PetscInt cStart, cEnd;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   std::string error;
+  PointGeometry g;
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(dm, c, &ct));
@@ -262,7 +235,6 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
       top[region] = std::max(top[region], (double)x[a]);
     }
     double volume = 0.0;
-    PointGeometry g;
     for (int q = 0; q < e.num_quadrature; ++q) {
       mapQuadraturePoint(e, x, q, g);
       volume += g.weight;
@@ -367,234 +339,6 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     PetscCall(ISRestoreIndices(points, &idx));
     PetscCall(ISDestroy(&points));
   }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode Problem::initialState(Vec local) const
-{
-  PetscSection s, csec;
-  Vec coords;
-  const PetscScalar *x;
-  PetscScalar *u;
-  PetscInt vStart, vEnd, numFields;
-  PetscFunctionBeginUser;
-  PetscCall(VecSet(local, 0.0));
-  PetscCall(DMGetLocalSection(dm_, &s));
-  PetscCall(PetscSectionGetNumFields(s, &numFields));
-  if (numFields <= kPressureField) PetscFunctionReturn(0);
-  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  PetscCall(DMGetCoordinateSection(dm_, &csec));
-  PetscCall(DMPlexGetDepthStratum(dm_, 0, &vStart, &vEnd));
-  PetscCall(VecGetArrayRead(coords, &x));
-  PetscCall(VecGetArray(local, &u));
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    PetscInt dof, off, coff;
-    PetscCall(PetscSectionGetFieldDof(s, v, kPressureField, &dof));
-    if (!dof) continue;
-    PetscCall(PetscSectionGetFieldOffset(s, v, kPressureField, &off));
-    PetscCall(PetscSectionGetOffset(csec, v, &coff));
-    u[off] = initialPressure(&x[coff]);
-  }
-  if (numFields > kInterfacePressureField) {
-    // p3 starts hydrostatic too, at the position of its lateral edge's vertices.
-    PetscInt eStart, eEnd;
-    PetscCall(DMPlexGetDepthStratum(dm_, 1, &eStart, &eEnd));
-    for (PetscInt e = eStart; e < eEnd; ++e) {
-      PetscInt dof, off, coff;
-      PetscCall(PetscSectionGetFieldDof(s, e, kInterfacePressureField, &dof));
-      if (!dof) continue;
-      const PetscInt *cone;
-      PetscCall(DMPlexGetCone(dm_, e, &cone));
-      PetscCall(PetscSectionGetFieldOffset(s, e, kInterfacePressureField, &off));
-      PetscCall(PetscSectionGetOffset(csec, cone[0], &coff));
-      u[off] = initialPressure(&x[coff]);
-    }
-  }
-  PetscCall(VecRestoreArray(local, &u));
-  PetscCall(VecRestoreArrayRead(coords, &x));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode Problem::insertBoundaryValues(double t, Vec local) const
-{
-  PetscScalar *u;
-  PetscFunctionBeginUser;
-  PetscCall(VecGetArray(local, &u));
-  for (const auto &c : constrained_) {
-    const auto &bc = scene_->conditions[c.condition];
-    u[c.offset] = bc.value[0] * bc.time.factor(t);
-  }
-  PetscCall(VecRestoreArray(local, &u));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode Problem::insertBoundaryRates(double t, const RateStencil &stencil,
-                                            Vec local_rate) const
-{
-  PetscScalar *rate;
-  const PetscScalar *state[2] = {nullptr, nullptr};
-  PetscFunctionBeginUser;
-  PetscCall(VecGetArray(local_rate, &rate));
-  for (int k = 0; k < stencil.count; ++k)
-    PetscCall(VecGetArrayRead(stencil.state[k], &state[k]));
-  for (const auto &c : constrained_) {
-    const auto &bc = scene_->conditions[c.condition];
-    double r = stencil.now * bc.value[0] * bc.time.factor(t);
-    for (int k = 0; k < stencil.count; ++k)
-      r += stencil.weight[k] * state[k][c.offset];
-    rate[c.offset] = r;
-  }
-  for (int k = 0; k < stencil.count; ++k)
-    PetscCall(VecRestoreArrayRead(stencil.state[k], &state[k]));
-  PetscCall(VecRestoreArray(local_rate, &rate));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const ResidualMode &mode,
-                                 Vec f) const
-{
-  PetscFunctionBeginUser;
-  PetscCall(beginLogEvent(events_.residual));
-  PetscCall(assembleResidual(t, local, local_rate, mode, f));
-  PetscCall(endLogEvent(events_.residual));
-  PetscFunctionReturn(0);
-}
-
-void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
-                        const PetscScalar *coords, double mass_scale, double shift,
-                        bool with_jacobian, CellWork &w, physics::SkeletonResponse *responses) const
-{
-  const BulkCell &cell = cells_[i];
-  CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
-  const bool history = cell.history != kNoHistory;
-  if (history) m.law = &laws_[cell.region];
-  const int n = closures_.closureSize(i), nc = closures_.coordinateSize(i);
-  w.x.resize(n), w.xdot.resize(n), w.xc.resize(nc);
-  gatherClosure(u, closures_.local(i), n, w.x.data());
-  gatherClosure(u_t, closures_.local(i), n, w.xdot.data());
-  gatherClosure(coords, closures_.coordinates(i), nc, w.xc.data());
-  w.F.assign(n, 0.0);
-  if (with_jacobian) w.K.assign((size_t)n * n, 0.0);
-  CellKernel kernel{
-      elements_[cell.element], dim_, m, scene_->hasPressure() && m.porous, mass_scale, {0, 0, 0},
-      scene_->axisymmetric};
-  for (int d = 0; d < dim_; ++d)
-    kernel.gravity[d] = gravityVector(d);
-  if (history) {
-    kernel.history = &skeleton_committed_[cell.history];
-    kernel.responses = responses;
-  }
-  kernel(
-      w.xc.data(), w.x.data(), w.xdot.data(), n,
-      [&](const double *p, double s0[3][3]) { initialStress(p, cell.region, s0); },
-      [&](const double *p) { return initialPressure(p); }, w.F.data(), shift,
-      with_jacobian ? w.K.data() : nullptr);
-}
-
-PetscErrorCode Problem::assembleResidual(double t, Vec local, Vec local_rate,
-                                         const ResidualMode &mode, Vec f) const
-{
-  PetscSection s, csec;
-  Vec coords;
-  PetscFunctionBeginUser;
-  PetscCall(VecSet(f, 0.0));
-  PetscCall(DMGetLocalSection(dm_, &s));
-  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  PetscCall(DMGetCoordinateSection(dm_, &csec));
-  CellWork work;
-  {
-    // Closures through the cache (closure_cache.hpp), read from and added to the local arrays:
-    // the same values and additions, in the same order, as DMPlexVec{Get,Set}Closure.
-    const PetscScalar *ua, *ra, *ca;
-    PetscScalar *fa;
-    PetscCall(VecGetArrayRead(local, &ua));
-    PetscCall(VecGetArrayRead(local_rate, &ra));
-    PetscCall(VecGetArrayRead(coords, &ca));
-    PetscCall(VecGetArray(f, &fa));
-    for (size_t i = 0; i < cells_.size(); ++i) {
-      cellTerms(i, ua, ra, ca, mode.mass_scale, 0.0, false, work);
-      // All entries, constrained dofs included: they are the reactions (ADD_ALL_VALUES).
-      addClosure(work.F.data(), closures_.local(i), closures_.closureSize(i), fa);
-    }
-    PetscCall(VecRestoreArray(f, &fa));
-    PetscCall(VecRestoreArrayRead(coords, &ca));
-    PetscCall(VecRestoreArrayRead(local_rate, &ra));
-    PetscCall(VecRestoreArrayRead(local, &ua));
-  }
-  PetscCall(beginLogEvent(events_.interface_residual));
-  PetscCall(interfaces_.residual(local, InterfaceRates{local_rate, mode.dt}, mode.mass_scale, f));
-  PetscCall(endLogEvent(events_.interface_residual));
-  if (!mode.include_loads) PetscFunctionReturn(0);
-  PetscCall(addLoads(t, mode.mass_scale, f, nullptr));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_rate,
-                                 const ResidualMode &mode, Mat J) const
-{
-  const double mass_scale = mode.mass_scale;
-  Vec coords;
-  const PetscScalar *ua, *ra, *ca;
-  PetscFunctionBeginUser;
-  PetscCall(beginLogEvent(events_.jacobian));
-  // The cells without history (linear elasticity, Biot) have a Jacobian that depends on the
-  // shift and the mass scale only, not on the state: it is assembled once and copied while
-  // those stay the same (fixed time steps). Measured on the 3D caisson, 160k unknowns, 2
-  // ranks: the bulk loop took 0.96 s per Jacobian, 14 % of the time steps.
-  const bool reuse = linear_cells_jacobian_ && shift == linear_cells_shift_ &&
-                     mass_scale == linear_cells_mass_scale_;
-  if (reuse)
-    PetscCall(MatCopy(linear_cells_jacobian_, J, SAME_NONZERO_PATTERN));
-  else
-    PetscCall(MatZeroEntries(J));
-  PetscCall(DMGetCoordinatesLocal(dm_, &coords));
-  CellWork work;
-  std::vector<PetscInt> rows;
-  // Closures and matrix indices through the cache (closure_cache.hpp); one MatSetValues per
-  // cell with the indices DMPlexMatSetClosure would compute (constrained dofs negative).
-  PetscCall(VecGetArrayRead(local, &ua));
-  PetscCall(VecGetArrayRead(local_rate, &ra));
-  PetscCall(VecGetArrayRead(coords, &ca));
-  auto addCells = [&](bool with_history) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    for (size_t i = 0; i < cells_.size(); ++i) {
-      if ((cells_[i].history != kNoHistory) != with_history) continue;
-      cellTerms(i, ua, ra, ca, mass_scale, shift, true, work);
-      const int n = closures_.closureSize(i);
-      rows.resize(n);
-      closures_.globalIndices(i, rows.data());
-      PetscCall(MatSetValues(J, n, rows.data(), n, rows.data(), work.K.data(), ADD_VALUES));
-    }
-    PetscFunctionReturn(0);
-  };
-  if (!reuse) {
-    PetscCall(addCells(false));
-    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
-    if (linear_cells_jacobian_)
-      PetscCall(MatCopy(J, linear_cells_jacobian_, SAME_NONZERO_PATTERN));
-    else
-      PetscCall(MatDuplicate(J, MAT_COPY_VALUES, &linear_cells_jacobian_));
-    linear_cells_shift_ = shift;
-    linear_cells_mass_scale_ = mass_scale;
-  }
-  if (any_skeleton_history_) PetscCall(addCells(true));
-  PetscCall(VecRestoreArrayRead(coords, &ca));
-  PetscCall(VecRestoreArrayRead(local_rate, &ra));
-  PetscCall(VecRestoreArrayRead(local, &ua));
-  PetscCall(beginLogEvent(events_.interface_jacobian));
-  PetscCall(interfaces_.jacobian(local, InterfaceRates{local_rate, mode.dt}, shift, mass_scale, J));
-  PetscCall(endLogEvent(events_.interface_jacobian));
-  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(endLogEvent(events_.jacobian));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode Problem::release()
-{
-  PetscFunctionBeginUser;
-  PetscCall(MatDestroy(&linear_cells_jacobian_));
   PetscFunctionReturn(0);
 }
 

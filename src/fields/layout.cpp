@@ -43,10 +43,33 @@ PetscErrorCode lateralEdgesOnBoundary(DM dm, const std::string &boundary,
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode checkElementOrder(MPI_Comm comm, const Scene &scene)
+{
+  PetscFunctionBeginUser;
+  if (scene.displacement_order == 1) PetscFunctionReturn(0);
+  std::string what;
+  if (!scene.interfaces.empty())
+    what = "interfaces (-interfaces)";
+  else if (scene.axisymmetric)
+    what = "-axisymmetric";
+  else if (!scene.probes.empty())
+    what = "probes (-probe_<name>)";
+  else
+    for (const Region &r : scene.regions)
+      if (r.model == MaterialModel::mohr_coulomb) what = "plastic regions (Mohr-Coulomb)";
+  PetscCheck(what.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-displacement_order %d: not available yet with %s; order 2 supports plane-strain "
+             "and 3D scenes of elastic and Biot regions without interfaces, plasticity, "
+             "axisymmetry or probes (use -displacement_order 1)",
+             scene.displacement_order, what.c_str());
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
 {
   DMLabel cellSets, faceSets, porous;
   PetscFunctionBeginUser;
+  PetscCall(checkElementOrder(PetscObjectComm((PetscObject)dm), scene));
   PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
   PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
   PetscCall(DMCreateLabel(dm, kPorousLabel));
@@ -129,6 +152,20 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
 
 namespace {
 
+/// Displacement nodes on a point for the scene's order: every vertex; at order 2 also every edge
+/// (P2 and Q2 alike: quadratic along the edge, one node at its middle) and every
+/// quadrilateral or hexahedron (the centre node of Lagrange Q2). Triangles and tetrahedra
+/// have none (P2). Other points (cohesive cells, their lateral edges) have none.
+int displacementNodes(DMPolytopeType type, int order)
+{
+  if (type == DM_POLYTOPE_POINT) return 1;
+  if (order < 2) return 0;
+  return type == DM_POLYTOPE_SEGMENT || type == DM_POLYTOPE_QUADRILATERAL ||
+                 type == DM_POLYTOPE_HEXAHEDRON
+             ? 1
+             : 0;
+}
+
 /// Whether a point is in stratum 1 of a label.
 PetscErrorCode inLabel(DMLabel label, PetscInt point, bool *in)
 {
@@ -197,7 +234,8 @@ PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
   }
   PetscCall(PetscSectionSetChart(s, pStart, pEnd));
 
-  // Dofs per point and field: u on vertices, p on porous vertices, p3 on flow lateral edges.
+  // Dofs per point and field: u on the displacement nodes (vertices; at order 2 edges and
+  // tensor faces and cells too), p on porous vertices, p3 on flow lateral edges.
   PetscInt vStart, vEnd;
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   auto dofs = [&](PetscInt pt, int field_dofs[3], int field_constraints[3]) -> PetscErrorCode {
@@ -205,10 +243,16 @@ PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
     const unsigned bits = constrained[pt - pStart];
     for (int f = 0; f < 3; ++f)
       field_dofs[f] = field_constraints[f] = 0;
-    if (pt >= vStart && pt < vEnd) {
+    DMPolytopeType type;
+    PetscCall(DMPlexGetCellType(dm, pt, &type));
+    if (displacementNodes(type, scene.displacement_order)) {
+      // Every constrained point of a boundary's closure (vertices, and at order 2 its edges
+      // and faces) takes the condition: the label is complete (markLayoutLabels).
       field_dofs[0] = dim;
       for (int d = 0; d < dim; ++d)
         field_constraints[0] += (bits >> d) & 1u;
+    }
+    if (pt >= vStart && pt < vEnd) {
       bool hasP = false;
       if (scene.hasPressure()) PetscCall(inLabel(porous, pt, &hasP));
       field_dofs[1] = hasP ? 1 : 0;

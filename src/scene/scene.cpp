@@ -331,6 +331,18 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
                     nullptr));
   PetscCheck(scene.stabilization_factor >= 0.0, comm, PETSC_ERR_USER_INPUT,
              "-stabilization_factor %g: must be >= 0", scene.stabilization_factor);
+  {
+    double order = scene.displacement_order;
+    PetscCall(getReal(PetscOptionsObject, "-displacement_order",
+                      "order of the displacement elements: 1 (equal order, stabilised) or 2 "
+                      "(Taylor-Hood P2/P1, Q2/Q1; no stabilisation)",
+                      &order, nullptr));
+    char given[32];
+    std::snprintf(given, sizeof given, "%g", order); // PETSc's %g would print "3."
+    PetscCheck(order == 1.0 || order == 2.0, comm, PETSC_ERR_USER_INPUT,
+               "-displacement_order %s: expected 1 (linear) or 2 (quadratic, Taylor-Hood)", given);
+    scene.displacement_order = (int)order;
+  }
 
   std::string initial = "none";
   PetscCall(getString(PetscOptionsObject, "-initial_state",

@@ -153,6 +153,12 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobi
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fieldsplit));
   if (!fieldsplit) PetscFunctionReturn(0);
+  // The vertex blocks and the rigid-body modes below know vertex unknowns only.
+  PetscCheck(scene.displacement_order == 1, PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT,
+             "-displacement_order %d: the fieldsplit solver (-pc_type fieldsplit, -solver_preset "
+             "fieldsplit, or auto in 3D above -solver_auto_threshold) is not available yet at "
+             "order 2; use the direct solver (-solver_preset direct)",
+             scene.displacement_order);
   PetscInt numFields;
   char **names;
   IS *fields;

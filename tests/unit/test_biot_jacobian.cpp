@@ -2,7 +2,8 @@
 // assembled residual, block by block (uu, up, pu, pp): the pressure rows are scaled by dt and
 // are many orders smaller than the elastic ones, so a single matrix norm would hide them.
 // All terms are on: elasticity, initial (K0) stress, gravity, Biot coupling, storage 1/M,
-// Darcy flow with gravity, pressure stabilisation, an elastic region beside a porous one.
+// Darcy flow with gravity, pressure stabilisation (order 1), an elastic region beside a porous
+// one; at displacement orders 1 (Q1/Q1) and 2 (Q2/Q1 Taylor-Hood).
 #include "poroseam/layout.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
@@ -13,15 +14,17 @@
 #include <gtest/gtest.h>
 #include <petscdmplex.h>
 #include <random>
+#include <tuple>
 
 using namespace poroseam;
 
 namespace {
 
-Scene twoRegionScene(int dim)
+Scene twoRegionScene(int dim, int order)
 {
   Scene s;
   s.dim = dim;
+  s.displacement_order = order;
   Region soil;
   soil.name = "soil";
   soil.tag = 1;
@@ -71,10 +74,10 @@ struct Blocks {
   double max_entry[2][2] = {{0, 0}, {0, 0}};
 };
 
-PetscErrorCode compareJacobian(int dim, Blocks *blocks)
+PetscErrorCode compareJacobian(int dim, int order, Blocks *blocks)
 {
   DM dm;
-  Scene scene = twoRegionScene(dim);
+  Scene scene = twoRegionScene(dim, order);
   Problem problem;
   PetscFunctionBeginUser;
   PetscCall(buildMesh(dim, &dm));
@@ -209,21 +212,24 @@ PetscErrorCode compareJacobian(int dim, Blocks *blocks)
 
 } // namespace
 
-class BiotJacobian : public ::testing::TestWithParam<int> {};
+// (dimension, displacement order): order 2 is Q2/Q1 Taylor-Hood (no stabilisation term).
+class BiotJacobian : public ::testing::TestWithParam<std::tuple<int, int>> {};
 
 TEST_P(BiotJacobian, EveryBlockMatchesFiniteDifferences)
 {
   Blocks b;
-  ASSERT_EQ(compareJacobian(GetParam(), &b), 0);
+  const int dim = std::get<0>(GetParam()), order = std::get<1>(GetParam());
+  ASSERT_EQ(compareJacobian(dim, order, &b), 0);
   const char *names[2] = {"u", "p"};
   for (int r = 0; r < 2; ++r)
     for (int c = 0; c < 2; ++c) {
       ASSERT_GT(b.max_entry[r][c], 0.0) << "block " << names[r] << names[c] << " is empty";
       const double rel = b.max_error[r][c] / b.max_entry[r][c];
-      std::printf("dim %d block %s%s: max |J - J_fd| / max |J_fd| = %.2e\n", GetParam(), names[r],
-                  names[c], rel);
+      std::printf("dim %d order %d block %s%s: max |J - J_fd| / max |J_fd| = %.2e\n", dim, order,
+                  names[r], names[c], rel);
       EXPECT_LT(rel, 1e-6) << "block " << names[r] << names[c];
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Dimensions, BiotJacobian, ::testing::Values(2, 3));
+INSTANTIATE_TEST_SUITE_P(DimensionsAndOrders, BiotJacobian,
+                         ::testing::Combine(::testing::Values(2, 3), ::testing::Values(1, 2)));

@@ -1,0 +1,120 @@
+// Meshes for the element-order tests: the unit square or cube cut into n^dim squares or cubes,
+// kept as quadrilaterals / hexahedra or split into triangles (2 per square) / tetrahedra (6 per
+// cube, Kuhn), with the vertices moved by a smooth map so that cells are neither uniform nor
+// (tensor cells) affine. "Cell Sets" = 1 on every cell, "Face Sets" = 1 on every boundary face.
+// Built with DMPlexCreateFromCellListPetsc (PETSc 3.18 has no simplex generator here).
+#pragma once
+
+#include <cmath>
+#include <petscdmplex.h>
+#include <vector>
+
+namespace poroseam::test_support {
+
+/// x -> x + amplitude * prod sin(2 pi x_d) e (all components): fixes the boundary of the unit
+/// box, moves interior vertices by up to `amplitude`.
+inline void distort(int dim, double amplitude, double *x)
+{
+  double s = 1.0;
+  for (int d = 0; d < dim; ++d)
+    s *= std::sin(2.0 * M_PI * x[d]);
+  for (int d = 0; d < dim; ++d)
+    x[d] += amplitude * s * (d == 0 ? 1.0 : -0.7);
+}
+
+inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double amplitude, DM *dm)
+{
+  PetscFunctionBeginUser;
+  const int nv1 = n + 1;
+  const int nverts = dim == 2 ? nv1 * nv1 : nv1 * nv1 * nv1;
+  std::vector<double> coords(nverts * dim);
+  auto vid = [&](int i, int j, int k) { return i + nv1 * (j + nv1 * k); };
+  for (int k = 0; k < (dim == 3 ? nv1 : 1); ++k)
+    for (int j = 0; j < nv1; ++j)
+      for (int i = 0; i < nv1; ++i) {
+        double *x = &coords[vid(i, j, k) * dim];
+        x[0] = (double)i / n, x[1] = (double)j / n;
+        if (dim == 3) x[2] = (double)k / n;
+        distort(dim, amplitude, x);
+      }
+  std::vector<PetscInt> cells;
+  int corners = 0;
+  auto volumeSign = [&](const std::vector<PetscInt> &c) {
+    // Sign of the simplex volume (det of edge vectors).
+    const double *a = &coords[c[0] * dim];
+    double e[3][3] = {{0}};
+    for (int r = 1; r <= dim; ++r)
+      for (int d = 0; d < dim; ++d)
+        e[r - 1][d] = coords[c[r] * dim + d] - a[d];
+    if (dim == 2) return e[0][0] * e[1][1] - e[0][1] * e[1][0];
+    return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+           e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+           e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  };
+  // The orientation of PETSc's reference simplex: counter-clockwise triangle, and a
+  // tetrahedron whose edge vectors from vertex 0 have a negative determinant.
+  auto addSimplex = [&](std::vector<PetscInt> c) {
+    if (volumeSign(c) * (dim == 2 ? 1.0 : -1.0) < 0) std::swap(c[0], c[1]);
+    cells.insert(cells.end(), c.begin(), c.end());
+  };
+  for (int k = 0; k < (dim == 3 ? n : 1); ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        if (dim == 2) {
+          const PetscInt v00 = vid(i, j, 0), v10 = vid(i + 1, j, 0), v11 = vid(i + 1, j + 1, 0),
+                         v01 = vid(i, j + 1, 0);
+          if (simplex) {
+            // Alternate the diagonal so the mesh has no preferred direction.
+            if ((i + j) % 2) {
+              addSimplex({v00, v10, v11});
+              addSimplex({v00, v11, v01});
+            } else {
+              addSimplex({v00, v10, v01});
+              addSimplex({v10, v11, v01});
+            }
+            corners = 3;
+          } else {
+            cells.insert(cells.end(), {v00, v10, v11, v01});
+            corners = 4;
+          }
+        } else {
+          auto v = [&](int a, int b, int c) { return (PetscInt)vid(i + a, j + b, k + c); };
+          if (simplex) {
+            // Kuhn: the 6 paths from corner 000 to 111 along the axes.
+            const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                     {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+            for (const auto &p : perms) {
+              int at[3] = {0, 0, 0};
+              std::vector<PetscInt> c{v(0, 0, 0)};
+              for (int s = 0; s < 3; ++s) {
+                at[p[s]] = 1;
+                c.push_back(v(at[0], at[1], at[2]));
+              }
+              addSimplex(c);
+            }
+            corners = 4;
+          } else {
+            // DMPlex hexahedron: bottom face clockwise seen from outside, then top.
+            cells.insert(cells.end(), {v(0, 0, 0), v(0, 1, 0), v(1, 1, 0), v(1, 0, 0), v(0, 0, 1),
+                                       v(1, 0, 1), v(1, 1, 1), v(0, 1, 1)});
+            corners = 8;
+          }
+        }
+      }
+  const PetscInt ncells = (PetscInt)(cells.size() / corners);
+  PetscCall(DMPlexCreateFromCellListPetsc(PETSC_COMM_SELF, dim, ncells, nverts, corners, PETSC_TRUE,
+                                          cells.data(), dim, coords.data(), dm));
+  PetscCall(DMCreateLabel(*dm, "Cell Sets"));
+  PetscCall(DMCreateLabel(*dm, "Face Sets"));
+  DMLabel cellSets, faceSets;
+  PetscCall(DMGetLabel(*dm, "Cell Sets", &cellSets));
+  PetscCall(DMGetLabel(*dm, "Face Sets", &faceSets));
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(*dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c)
+    PetscCall(DMLabelSetValue(cellSets, c, 1));
+  PetscCall(DMPlexMarkBoundaryFaces(*dm, 1, faceSets));
+  PetscFunctionReturn(0);
+}
+
+} // namespace poroseam::test_support
