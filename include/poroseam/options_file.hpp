@@ -38,10 +38,13 @@ struct ExpandedCommandLine {
   std::vector<GivenOption> options; ///< the options among them, in order
 };
 
-/// Reads the command line's options files as described above. Returns "" or the one-line
-/// error (naming the file, the line and the option). Not collective: rank 0 reads, and
-/// broadcasts the result (main.cpp), as PETSc does.
-std::string expandOptionsFiles(int argc, char **argv, ExpandedCommandLine *out);
+/// Reads the command line's options files as described above. `environment` is the text of
+/// PETSC_OPTIONS (or null): PETSc inserts it before the command line, so its options come
+/// first in `out->args` (and the caller unsets it). Returns "" or the one-line error (naming
+/// the file, the line and the option). Not collective: rank 0 reads, and broadcasts the
+/// result (main.cpp), as PETSc does.
+std::string expandOptionsFiles(int argc, char **argv, const char *environment,
+                               ExpandedCommandLine *out);
 
 /// The command line the process was started with (PETSc's copy holds the options files read
 /// in place): from /proc/self/cmdline, or `fallback` where that cannot be read.

@@ -7,6 +7,7 @@
 #include "poroseam/simulation.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <petscsys.h>
 #include <string>
@@ -91,7 +92,7 @@ std::string readCommandLine(int argc, char **argv, std::vector<std::string> *arg
   std::string error, packed;
   if (worldRank() == 0) {
     poroseam::ExpandedCommandLine expanded;
-    error = poroseam::expandOptionsFiles(argc, argv, &expanded);
+    error = poroseam::expandOptionsFiles(argc, argv, std::getenv("PETSC_OPTIONS"), &expanded);
     if (error.empty()) error = poroseam::checkGivenOptions(expanded.options);
     // Arguments are C strings: a NUL separates them.
     for (const auto &a : expanded.args)
@@ -103,6 +104,8 @@ std::string readCommandLine(int argc, char **argv, std::vector<std::string> *arg
     text->resize(size);
     if (size) MPI_Bcast(text->data(), (int)size, MPI_CHAR, 0, MPI_COMM_WORLD);
   }
+  // Read above, in place, with the command line: PETSc must not read it (and its files) again.
+  unsetenv("PETSC_OPTIONS");
   args->clear();
   for (std::size_t start = 0; start < packed.size();) {
     const std::size_t end = packed.find('\0', start);

@@ -94,13 +94,14 @@ std::size_t invalidUtf8(const std::string &text)
   return std::string::npos;
 }
 
-/// One line of an options file split as PETSc splits it: the text after '#' dropped, tabs
-/// and carriage returns as blanks, a token in double quotes kept whole (without them).
-bool tokenize(std::string line, std::vector<std::string> *tokens)
+/// One line of an options file split as PETSc splits it: the text after '#' dropped (in a
+/// file), tabs and carriage returns as blanks, a token in double quotes kept whole (without
+/// them).
+bool tokenize(std::string line, std::vector<std::string> *tokens, bool comments = true)
 {
   tokens->clear();
   const auto hash = line.find('#');
-  if (hash != std::string::npos) line.erase(hash);
+  if (comments && hash != std::string::npos) line.erase(hash);
   for (char &c : line)
     if (c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') c = ' ';
   std::size_t i = 0;
@@ -148,25 +149,38 @@ class Expander {
 public:
   explicit Expander(ExpandedCommandLine *out) : out_(out) {}
 
-  /// argv as PetscOptionsInsertArgs walks it. Returns "" or the error.
-  std::string commandLine(int argc, char **argv)
+  /// PETSC_OPTIONS (`environment`, may be null), then argv, as PETSc inserts them (the
+  /// environment first: the command line overrides it). Returns "" or the error.
+  std::string commandLine(int argc, char **argv, const char *environment)
   {
     out_->args.assign(1, argc > 0 ? argv[0] : "poroseam");
-    for (int i = 1; i < argc; ++i) {
-      const std::string token = argv[i];
-      if (!isKey(token)) { // PETSc skips a word that follows no option
-        out_->args.push_back(token);
-        continue;
-      }
-      const bool has_value = i + 1 < argc && !isKey(argv[i + 1]);
-      const std::string value = has_value ? argv[i + 1] : "";
-      if (has_value) ++i;
-      if (!option(token, value, has_value, "on the command line", "")) return error_;
-    }
+    std::vector<std::string> words;
+    if (environment && !tokenize(environment, &words, false))
+      return "PETSC_OPTIONS: a double quote (\") is not closed";
+    if (!arguments(words, "in PETSC_OPTIONS")) return error_;
+    if (!arguments(std::vector<std::string>(argv + std::min(argc, 1), argv + argc),
+                   "on the command line"))
+      return error_;
     return "";
   }
 
 private:
+  /// Words as PetscOptionsInsertArgs walks them.
+  bool arguments(const std::vector<std::string> &words, const std::string &where)
+  {
+    for (std::size_t i = 0; i < words.size(); ++i) {
+      if (!isKey(words[i])) { // PETSc skips a word that follows no option
+        out_->args.push_back(words[i]);
+        continue;
+      }
+      const bool has_value = i + 1 < words.size() && !isKey(words[i + 1]);
+      const std::string value = has_value ? words[i + 1] : "";
+      if (!option(words[i], value, has_value, where, "")) return false;
+      if (has_value) ++i;
+    }
+    return true;
+  }
+
   struct Open {
     std::string path;
     dev_t device;
@@ -253,7 +267,7 @@ private:
       const std::string preset = presetName(as_given);
       if (!preset.empty())
         hint = "; the solver presets are " + solverPresetList() + " (-solver_preset <name>)";
-      else if (where != "on the command line" && !fs::path(as_given).is_absolute())
+      else if (where.rfind("on line ", 0) == 0 && !fs::path(as_given).is_absolute())
         hint = " (a relative path in an options file is relative to that file's folder)";
       return fail(what + " does not exist" + hint);
     }
@@ -364,10 +378,11 @@ private:
 
 } // namespace
 
-std::string expandOptionsFiles(int argc, char **argv, ExpandedCommandLine *out)
+std::string expandOptionsFiles(int argc, char **argv, const char *environment,
+                               ExpandedCommandLine *out)
 {
   Expander expander(out);
-  return expander.commandLine(argc, argv);
+  return expander.commandLine(argc, argv, environment);
 }
 
 std::vector<std::string> startedCommandLine(const std::vector<std::string> &fallback)

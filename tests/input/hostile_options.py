@@ -73,6 +73,9 @@ def fixture(name, out):
     if name == "not_utf8":
         write(os.path.join(out, "scene.opts"), "-ts_dt 0.2\n# \xe9t\xe9 (Latin-1)\n".encode("latin-1"), "wb")
         return base + ["-options_file", os.path.join(out, "scene.opts")]
+    if name == "petsc_options_fifo":
+        os.mkfifo(os.path.join(out, "pipe.opts"))
+        return base
     if name in ("dev_zero", "dev_zero_np2"):
         return base + ["-options_file", "/dev/zero"]
     if name in ("fifo", "fifo_np2", "fifo_nested"):
@@ -159,6 +162,9 @@ CASES = {
     "fifo": dict(expect=["pipe.opts", "FIFO"]),
     "fifo_np2": dict(expect=["pipe.opts", "FIFO"], ranks=2),
     "fifo_nested": dict(expect=["pipe.opts", "FIFO", "line 1 of"]),
+    # PETSc reads the environment's options (and their files) before the command line's
+    "petsc_options_fifo": dict(expect=["pipe.opts", "FIFO", "in PETSC_OPTIONS"],
+                               env={"PETSC_OPTIONS": "-ts_dt 0.2 -options_file {out}/pipe.opts"}),
     "too_large": dict(expect=["big.opts", "bytes", "1048576"]),
     "nested_missing": dict(expect=["more/missing.opts", "does not exist", "line 3 of",
                                    "relative to that file's folder"]),
@@ -191,11 +197,11 @@ CASES = {
 }
 
 
-def run(cmd, cwd, ranks=1):
+def run(cmd, cwd, ranks=1, extra_env=None):
     if ranks > 1:
         cmd = ["mpiexec", "-n", str(ranks)] + cmd
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMPI_MCA_rmaps_base_oversubscribe="1")
+               OMPI_MCA_rmaps_base_oversubscribe="1", **(extra_env or {}))
     try:
         p = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            timeout=TIMEOUT)
@@ -294,7 +300,8 @@ def main():
     else:
         cmd = [EXE] + fixture(a.case, out)
         print("run:", " ".join(cmd).replace("\n", "\\n")[:300], flush=True)
-        rc, text = run(cmd, SOURCE, case.get("ranks", 1))
+        env = {k: v.format(out=out) for k, v in case.get("env", {}).items()}
+        rc, text = run(cmd, SOURCE, case.get("ranks", 1), env)
     wall = time.time() - t0
     with open(os.path.join(out + ".log"), "w") as f:
         f.write(text)
