@@ -95,7 +95,7 @@ def fixture(name, out):
         write(os.path.join(out, "scene.opts"), "-ts_dt 0.2\n-bc_top_traction 0, -1e4\n")
         return base + ["-options_file", os.path.join(out, "scene.opts")]
     if name == "unclosed_quote":
-        write(os.path.join(out, "scene.opts"), '-output_dir "results\n')
+        write(os.path.join(out, "scene.opts"), f'-output_dir "{out}/results\n')
         return base + ["-options_file", os.path.join(out, "scene.opts")]
     if name in ("probes_600", "probes_600_np2"):
         return base + ["-options_file", probes(out, 600)]
@@ -107,7 +107,7 @@ def fixture(name, out):
     if name == "output_dir_newline":
         return ["-options_file", SCENE, "-output_dir", os.path.join(out, "a\nb")]
     if name == "output_dir_control_in_file":
-        write(os.path.join(out, "scene.opts"), '-output_dir "res\x1bults"\n')
+        write(os.path.join(out, "scene.opts"), f'-output_dir "{out}/res\x1bults"\n')
         return ["-options_file", SCENE, "-options_file", os.path.join(out, "scene.opts")]
     if name in ("long_value", "long_value_np2"):
         return base + ["-region_soil_E", LONG_E]
