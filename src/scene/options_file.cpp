@@ -169,10 +169,9 @@ private:
   bool arguments(const std::vector<std::string> &words, const std::string &where)
   {
     for (std::size_t i = 0; i < words.size(); ++i) {
-      if (!isKey(words[i])) { // PETSc skips a word that follows no option
-        out_->args.push_back(words[i]);
-        continue;
-      }
+      // PETSc skips a word that follows no option; passed on, it could become the value of
+      // a flag that ends an options file read in place before it.
+      if (!isKey(words[i])) continue;
       const bool has_value = i + 1 < words.size() && !isKey(words[i + 1]);
       const std::string value = has_value ? words[i + 1] : "";
       if (!option(words[i], value, has_value, where, "")) return false;
