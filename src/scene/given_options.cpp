@@ -1,6 +1,8 @@
 // Every option as given, before PETSc starts: see given_options.hpp.
 #include "poroseam/given_options.hpp"
 
+#include "poroseam/run_options.hpp"
+
 #include <cctype>
 #include <cstdio>
 #include <set>
@@ -101,6 +103,9 @@ std::string checkGivenOptions(const std::vector<GivenOption> &options)
              " characters ('" + shown(o.value, 24) + "'), more than the " + std::to_string(most) +
              " PETSc reads for " + (path ? "a path" : "a value") +
              " (the rest would be cut off silently)";
+    // Here, where the file and line are known; checkNumericOptions checks the same again.
+    const std::string range = integerRangeError(o.name, o.value);
+    if (!range.empty()) return "option " + o.name + " " + o.value + where + ": " + range;
     names.insert(lowered(o.name));
     if (o.name.rfind("-probe_", 0) == 0) ++probes;
   }

@@ -131,6 +131,23 @@ bool parsesAsReal(const std::string &text, PetscReal *value)
 
 } // namespace
 
+std::string integerRangeError(const std::string &option, const std::string &value)
+{
+  const std::string name = option.substr(option.find_first_not_of('-'));
+  const bool integer =
+      isMumpsIcntl(name) || std::any_of(std::begin(kIntegerOptions), std::end(kIntegerOptions),
+                                        [&](const char *base) { return matches(name, base); });
+  if (integer && !fitsInt(value)) return "out of range, expected an integer " + intRange();
+  for (const char *base : kWholeNumberOptions) {
+    if (!matches(name, base)) continue;
+    char *end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (end != value.c_str() && std::isfinite(v) && std::fabs(v) > (double)PETSC_MAX_INT)
+      return "out of range, expected a whole number " + intRange();
+  }
+  return "";
+}
+
 PetscErrorCode checkNumericOptions(MPI_Comm comm)
 {
   std::vector<std::pair<std::string, std::string>> options;

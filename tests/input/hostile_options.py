@@ -183,11 +183,11 @@ CASES = {
     "long_value_petsc_option": dict(expect=["-ksp_type", "307 characters"]),
     "int_overflow_checkpoint_every": dict(expect=["-checkpoint_every 4294967297", "2147483647"]),
     "int_overflow_checkpoint_every_np2": dict(expect=["-checkpoint_every 4294967297"], ranks=2),
-    "int_overflow_in_file": dict(expect=["-ts_max_steps 2147483648", "2147483647"]),
+    "int_overflow_in_file": dict(expect=["-ts_max_steps 2147483648", "line 1 of", "2147483647"]),
     "int_overflow_negative": dict(expect=["-snes_max_it -2147483649", "-2147483648"]),
     "int_overflow_prefixed": dict(expect=["-fieldsplit_displacement_ksp_max_it 3000000000"]),
     "int_overflow_mumps": dict(expect=["-mat_mumps_icntl_14 99999999999999999999"]),
-    "int_overflow_output_every": dict(expect=["-output_fields_every 4294967297", "2147483647"]),
+    "int_overflow_output_every": dict(expect=["-output_fields_every 4294967297", "line 1 of", "2147483647"]),
     "checkpoints_is_a_file": dict(expect=["results/checkpoints", "not a directory"]),
     # good runs
     "long_path_ok": dict(ok=True, expect=["2 steps"]),
