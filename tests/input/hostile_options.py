@@ -12,7 +12,9 @@ would read forever is killed after TIMEOUT and fails the case).
 The good runs check what must still work: a scene copied with its mesh, a nested options file
 and a time table to a temporary folder and run from a third folder finds all of them next to
 the files that name them (not in the working directory, where decoys of the same names wait),
-and gives the same time series as the scene with the load halved directly; PETSc's
+and gives the same time series as the scene with the load halved directly; a scene that
+names its preset as options/solvers/direct.opts, run from another folder, finds it by name;
+PETSc's
 -prefix_push and the order of the command line against an options file keep their meaning; a
 path longer than 255 characters is fine.
 """
@@ -146,6 +148,17 @@ def fixture(name, out):
         # 2 steps to t = 0.4), one after it wins
         return ["-ts_dt", "0.4", "-options_file", SCENE, "-output_dir", os.path.join(out, "results"),
                 "-ts_max_time", "0.4"]
+    if name == "preset_by_old_path":
+        # a scene written for the source tree (-options_file options/solvers/direct.opts), copied
+        # and run elsewhere: the preset is found by its name
+        with open(SCENE) as f:
+            kept = [l for l in f if l.split("#", 1)[0].split()[:1] not in
+                    (["-mesh"], ["-ksp_type"], ["-pc_type"], ["-pc_factor_mat_solver_type"])]
+        write(os.path.join(out, "scene", "column.opts"), "".join(kept) +
+              f"-mesh {SOURCE}/meshes/terzaghi_column_2d.geo\n"
+              "-options_file options/solvers/direct.opts\n")
+        return ["-options_file", "scene/column.opts", "-ts_max_time", "0.4",
+                "-output_dir", "results"]
     raise KeyError(name)
 
 
@@ -194,7 +207,18 @@ CASES = {
     "prefix_push_in_file": dict(ok=True, expect=["2 steps"]),
     "command_line_order": dict(ok=True, expect=["2 steps"]),
     "scene_elsewhere": dict(ok=True, expect=["5 steps"]),
+    "preset_by_old_path": dict(ok=True, cwd=True, expect=["2 steps"],
+                               check=lambda out: record_has(out, '"-pc_type": "lu"')),
 }
+
+
+def record_has(out, text):
+    """[] when <out>/results/run.yaml holds `text`, else the failure."""
+    path = os.path.join(out, "results", "run.yaml")
+    if not os.path.isfile(path):
+        return [f"no {path}"]
+    with open(path) as f:
+        return [] if text in f.read() else [f"run.yaml does not hold {text}"]
 
 
 def run(cmd, cwd, ranks=1, extra_env=None):
@@ -301,7 +325,7 @@ def main():
         cmd = [EXE] + fixture(a.case, out)
         print("run:", " ".join(cmd).replace("\n", "\\n")[:300], flush=True)
         env = {k: v.format(out=out) for k, v in case.get("env", {}).items()}
-        rc, text = run(cmd, SOURCE, case.get("ranks", 1), env)
+        rc, text = run(cmd, out if case.get("cwd") else SOURCE, case.get("ranks", 1), env)
     wall = time.time() - t0
     with open(os.path.join(out + ".log"), "w") as f:
         f.write(text)
