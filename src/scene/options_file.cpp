@@ -25,6 +25,9 @@ namespace fs = std::filesystem;
 constexpr std::size_t kMaxFileBytes = 1u << 20;
 /// Files that include files: a chain this deep without a cycle is no scene.
 constexpr std::size_t kMaxDepth = 32;
+/// Files read in all (the same file may be named twice without a cycle: files naming each
+/// other's neighbours twice at each of 30 levels would read 2^30 files).
+constexpr std::size_t kMaxFilesRead = 256;
 
 bool equalsIgnoringCase(const std::string &a, const char *b)
 {
@@ -191,6 +194,7 @@ private:
   std::vector<std::size_t> prefixes_; ///< -prefix_push: lengths of prefix_ before each push
   std::string prefix_;                ///< the prefix in force
   std::string error_;
+  std::size_t files_read_ = 0;
 
   bool fail(const std::string &message)
   {
@@ -301,6 +305,11 @@ private:
         return fail("options files include each other in a cycle: " + cycle + "'" + path + "' (" +
                     namedBy(where) + "): remove one of the -options_file lines");
       }
+    if (++files_read_ > kMaxFilesRead) {
+      close(fd);
+      return fail(what + ": more than " + std::to_string(kMaxFilesRead) +
+                  " options files read in all (a file named again and again)");
+    }
     if (chain_.size() >= kMaxDepth) {
       close(fd);
       return fail(what + ": options files nested more than " + std::to_string(kMaxDepth) + " deep");

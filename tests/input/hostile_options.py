@@ -64,6 +64,12 @@ def fixture(name, out):
         write(os.path.join(out, "sub", "b.opts"), "-ts_dt 0.2\n-options_file ../c.opts\n")
         write(os.path.join(out, "c.opts"), "-options_file a.opts\n")
         return base + ["-options_file", os.path.join(out, "a.opts")]
+    if name == "include_doubling":
+        # no cycle, but each file names the next twice: 2^30 files to read
+        for i in range(30):
+            write(os.path.join(out, f"f{i}.opts"), f"-options_file f{i + 1}.opts\n" * 2)
+        write(os.path.join(out, "f30.opts"), "-ts_dt 0.2\n")
+        return base + ["-options_file", os.path.join(out, "f0.opts")]
     if name == "binary_file":
         with open(EXE, "rb") as f:
             write(os.path.join(out, "scene.opts"), f.read(4096), "wb")
@@ -167,6 +173,7 @@ CASES = {
     "self_include": dict(expect=["self.opts", "includes itself"]),
     "include_cycle": dict(expect=["cycle", "a.opts' -> ", "sub/b.opts", "c.opts", "line 1"]),
     "include_cycle_np2": dict(expect=["cycle", "sub/b.opts"], ranks=2),
+    "include_doubling": dict(expect=["more than 256 options files read", "line 2 of"]),
     "binary_file": dict(expect=["scene.opts", "not a text file"]),
     "binary_nested": dict(expect=["data.bin", "line 2 of", "scene.opts"]),
     "not_utf8": dict(expect=["scene.opts", "not UTF-8", "line 2"]),
