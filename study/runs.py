@@ -41,7 +41,7 @@ def read_options(path, seen=None):
             parts = line.split(None, 1)
             val = parts[1].strip() if len(parts) > 1 else ""
             if parts[0] == "-options_file":
-                opts.update(read_options(_resolve(val), seen))
+                opts.update(read_options(_resolve_in(path, val, preset=True), seen))
             else:
                 opts[parts[0]] = val
     return opts
@@ -49,6 +49,23 @@ def read_options(path, seen=None):
 
 def _resolve(p):
     return p if os.path.isabs(p) else os.path.join(TOP, p)
+
+
+def _resolve_in(options_file, p, preset=False):
+    """A path named in an options file, as poroseam finds it (docs/scenes.md, "Options files
+    and paths"): next to that file, else from the working directory (the repository root for
+    studies), else for -options_file [options/]solvers/<name>.opts the solver preset."""
+    if os.path.isabs(p):
+        return p
+    beside = os.path.normpath(os.path.join(os.path.dirname(options_file), p))
+    if os.path.exists(beside) or not os.path.exists(_resolve(p)):
+        if preset and not os.path.exists(beside):
+            head, name = os.path.split(os.path.normpath(p))
+            named = os.path.join(TOP, "options", "solvers", name)
+            if head in ("solvers", os.path.join("options", "solvers")) and os.path.isfile(named):
+                return named
+        return beside
+    return _resolve(p)
 
 
 def options_of(args):
@@ -169,7 +186,8 @@ def _file_digest(path, seen):
         for line in data.decode(errors="replace").splitlines():
             w = line.split("#", 1)[0].split()
             if len(w) == 2 and w[0] in ("-options_file", "-mesh"):
-                parts.append(w[1] + ":" + _file_digest(_resolve(w[1]), seen))
+                nested = _resolve_in(path, w[1], preset=w[0] == "-options_file")
+                parts.append(w[1] + ":" + _file_digest(nested, seen))
     return ",".join(parts)
 
 

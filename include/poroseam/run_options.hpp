@@ -16,6 +16,13 @@ namespace poroseam {
 /// "option -ts_max_steps abc: expected an integer" and the like.
 PetscErrorCode checkNumericOptions(MPI_Comm comm);
 
+/// For an integer option poroseam or its PETSc objects read (-checkpoint_every,
+/// -fieldsplit_displacement_ksp_max_it, -mat_mumps_icntl_14, -output_fields_every ...): ""
+/// when `value` fits PetscInt or is no number (checkNumericOptions says so), else "out of
+/// range, expected an integer from -2147483648 to 2147483647" (PETSc's parser would cast it
+/// silently: 4294967297 became 1). `option` with its '-'. Not collective, no PETSc call.
+std::string integerRangeError(const std::string &option, const std::string &value);
+
 /// Collective. Rank 0 creates the output directory (-output_dir, default `output`) with the
 /// filesystem library and writes and removes a file in it; every rank learns the outcome.
 /// Fails with one line naming the directory and the reason.

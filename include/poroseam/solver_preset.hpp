@@ -13,8 +13,16 @@
 #pragma once
 
 #include <petscsys.h>
+#include <string>
 
 namespace poroseam {
+
+/// The file of the solver preset `name` (options/solvers/<name>.opts of poroseam's source
+/// tree, wherever the scene is), or "" when there is no such preset. Not collective.
+std::string solverPresetFile(const std::string &name);
+
+/// The names of the presets, "direct, fieldsplit".
+std::string solverPresetList();
 
 /// Reads -solver_preset; with a preset, inserts its options (those not set already) and says
 /// which on stdout. `dim` and `unknowns` (global) decide for auto. Call before the solvers

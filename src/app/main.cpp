@@ -1,15 +1,18 @@
 // poroseam: hydro-mechanical finite elements for saturated soils, on PETSc.
 //   mpiexec -n 2 poroseam -options_file options/<scene>.opts [PETSc options]
 #include "poroseam/output_directory.hpp"
+#include "poroseam/given_options.hpp"
+#include "poroseam/options_file.hpp"
 #include "poroseam/run_options.hpp"
 #include "poroseam/scene.hpp"
 #include "poroseam/simulation.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <petscsys.h>
 #include <string>
-#include <sys/stat.h>
+#include <vector>
 
 static const char help[] = "poroseam: Biot consolidation with zero-thickness hydro-mechanical "
                            "interfaces.\nUsage: poroseam -options_file options/<scene>.opts\n";
@@ -82,34 +85,43 @@ PetscErrorCode reportError(MPI_Comm comm, int line, const char *func, const char
   return n;
 }
 
-/// The -options_file names on the command line must be readable files: PETSc would stop in
-/// PetscInitialize with a 30-line traceback. Returns the one-line error, or "".
-std::string checkOptionsFiles(int argc, char **argv)
+/// The command line PETSc is to see, the same on every rank: rank 0 reads the options files
+/// (options_file.hpp) and checks every option as given (given_options.hpp), as PETSc reads
+/// options files on rank 0 and broadcasts them. Returns "" or the one-line error.
+std::string readCommandLine(int argc, char **argv, std::vector<std::string> *args)
 {
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "-options_file") != 0) continue;
-    if (i + 1 >= argc || argv[i + 1][0] == '\0')
-      return "option -options_file has no value: name a scene file (options/<scene>.opts)";
-    const std::string path = argv[i + 1];
-    struct stat st;
-    if (stat(path.c_str(), &st) != 0)
-      return "options file '" + path + "' (option -options_file) does not exist";
-    if (S_ISDIR(st.st_mode))
-      return "options file '" + path + "' (option -options_file) is a directory: expected a " +
-             "scene file (options/<scene>.opts)";
-    if (FILE *f = std::fopen(path.c_str(), "r"))
-      std::fclose(f);
-    else
-      return "options file '" + path + "' (option -options_file) cannot be read";
+  std::string error, packed;
+  if (worldRank() == 0) {
+    poroseam::ExpandedCommandLine expanded;
+    error = poroseam::expandOptionsFiles(argc, argv, std::getenv("PETSC_OPTIONS"), &expanded);
+    if (error.empty()) error = poroseam::checkGivenOptions(expanded.options);
+    // Arguments are C strings: a NUL separates them.
+    for (const auto &a : expanded.args)
+      packed += a + '\0';
   }
-  return "";
+  for (std::string *text : {&error, &packed}) {
+    unsigned long size = text->size();
+    MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, MPI_COMM_WORLD);
+    text->resize(size);
+    if (size) MPI_Bcast(text->data(), (int)size, MPI_CHAR, 0, MPI_COMM_WORLD);
+  }
+  // Read above, in place, with the command line: PETSc must not read it (and its files) again.
+  unsetenv("PETSC_OPTIONS");
+  args->clear();
+  for (std::size_t start = 0; start < packed.size();) {
+    const std::size_t end = packed.find('\0', start);
+    args->push_back(packed.substr(start, end - start));
+    start = end + 1;
+  }
+  return error;
 }
 
-/// After an error inside a log phase (a stage pushed, events begun): leave the stages, and
-/// do not print -log_view's tables, whose nested formats would stop with a follow-up error
-/// about unbalanced events ("Entry 7 is larger than number of parents") that hides the real
-/// one. Returns whether a stage was still open.
-bool leaveLogPhases()
+/// After an error inside a log phase (a stage pushed, events begun), or any bad input: leave
+/// the stages, and do not print -log_view's tables, whose nested formats would stop with a
+/// follow-up error about unbalanced events ("Entry 7 is larger than number of parents";
+/// "Depth 2 > maxdepth+1" after an input error found before the first stage) that hides the
+/// real one. Returns whether a stage was still open.
+bool leaveLogPhases(bool input_error)
 {
   PetscStageLog log = nullptr;
   int stage = -1;
@@ -119,7 +131,7 @@ bool leaveLogPhases()
     if (PetscLogStagePop()) break;
     open = true;
   }
-  if (open) {
+  if (open || input_error) {
     for (const char *name : {"-log_view", "-log_view_memory", "-log_view_gpu_time", "-log_all",
                              "-log_trace", "-log_summary"})
       PetscOptionsClearValue(nullptr, name);
@@ -137,16 +149,23 @@ PetscErrorCode silentHelpPrintf(MPI_Comm, const char[], ...)
 
 int main(int argc, char **argv)
 {
-  // MPI first, so that an unreadable -options_file is reported once, by rank 0, and every
-  // rank finishes MPI cleanly (PETSc then leaves MPI_Finalize to us).
+  // MPI first, so that a bad -options_file is reported once, by rank 0, and every rank
+  // finishes MPI cleanly (PETSc then leaves MPI_Finalize to us).
   MPI_Init(&argc, &argv);
-  const std::string options_error = checkOptionsFiles(argc, argv);
+  std::vector<std::string> args; // PETSc keeps pointers into these until PetscFinalize
+  const std::string options_error = readCommandLine(argc, argv, &args);
   if (!options_error.empty()) {
     if (worldRank() == 0) std::fprintf(stderr, "poroseam: error: %s\n", options_error.c_str());
     MPI_Finalize();
     return 1;
   }
-  PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
+  std::vector<char *> petsc_argv;
+  for (auto &a : args)
+    petsc_argv.push_back(a.data());
+  petsc_argv.push_back(nullptr);
+  int petsc_argc = (int)args.size();
+  char **petsc_args = petsc_argv.data();
+  PetscCall(PetscInitialize(&petsc_argc, &petsc_args, nullptr, help));
   PetscCall(PetscPushErrorHandler(reportError, nullptr));
   PetscBool help_requested = PETSC_FALSE, has_mesh = PETSC_FALSE;
   PetscCall(PetscOptionsHasHelp(nullptr, &help_requested));
@@ -173,7 +192,7 @@ int main(int argc, char **argv)
     MPI_Abort(PETSC_COMM_WORLD, (int)error);
   }
   // Input errors and failed runs are detected on every rank together: finish cleanly.
-  if (error) leaveLogPhases();
+  if (error) leaveLogPhases(error == PETSC_ERR_USER_INPUT || collective_input_error);
   PetscCall(PetscPopErrorHandler()); // what main pushed (-malloc_dump: nothing left)
   PetscCall(PetscFinalize());
   MPI_Finalize();

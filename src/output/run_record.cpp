@@ -5,6 +5,7 @@
 
 #include "file_replace.hpp"
 #include "poroseam/collective_check.hpp"
+#include "poroseam/options_file.hpp"
 
 #include "poroseam_version.inc" // POROSEAM_VERSION, POROSEAM_GIT_COMMIT (cmake/version.cmake)
 
@@ -121,10 +122,14 @@ PetscErrorCode RunRecord::begin(MPI_Comm comm, const std::string &output_dir, bo
   int argc;
   char **argv;
   PetscCall(PetscGetArgs(&argc, &argv));
-  for (int i = 0; i < argc; ++i) {
-    command_line_ += (i ? " " : "") + std::string(argv[i]);
-    if (i + 1 < argc && std::string(argv[i]) == "-options_file")
-      scene_files_ += (scene_files_.empty() ? "" : " ") + std::string(argv[i + 1]);
+  // PETSc's arguments hold the options files read in place (options_file.hpp): the record
+  // names the command as it was typed.
+  const std::vector<std::string> args =
+      startedCommandLine(std::vector<std::string>(argv, argv + argc));
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    command_line_ += (i ? " " : "") + args[i];
+    if (i + 1 < args.size() && args[i] == "-options_file")
+      scene_files_ += (scene_files_.empty() ? "" : " ") + args[i + 1];
   }
   if (rank_ == 0 && restart) {
     // The interrupted run's segments stay as they are (text of our own making: no parser).

@@ -4,8 +4,11 @@
 #include "poroseam/option_check.hpp"
 #include "poroseam/scene.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -36,10 +39,21 @@ const char *const kIntegerOptions[] = {"ts_max_steps",
                                        "pc_gamg_agg_nsmooths",
                                        "pc_hypre_boomeramg_max_iter",
                                        "pc_hypre_boomeramg_max_levels",
+                                       "snes_linesearch_max_it",
+                                       "ksp_chebyshev_esteig_steps",
+                                       "pc_factor_levels",
+                                       "pc_asm_overlap",
+                                       "pc_hypre_boomeramg_agg_nl",
+                                       "pc_hypre_boomeramg_agg_num_paths",
+                                       "pc_fieldsplit_block_size",
+                                       "vertex_blocks_coarse_lag",
+                                       "vertex_blocks_dump_operator_setup",
                                        "solver_auto_threshold",
                                        "checkpoint_every",
                                        "restart_step",
                                        "test_io_fail_rank"};
+/// Options poroseam reads as numbers that must be whole (a count of steps).
+const char *const kWholeNumberOptions[] = {"output_fields_every"};
 /// Real options, likewise.
 const char *const kRealOptions[] = {"ts_dt",
                                     "ts_max_time",
@@ -72,6 +86,36 @@ bool matches(const std::string &option, const std::string &base)
          option[option.size() - base.size() - 1] == '_';
 }
 
+/// MUMPS's integer controls, -mat_mumps_icntl_<n> (with any solver prefix).
+bool isMumpsIcntl(const std::string &option)
+{
+  const std::string key = "mat_mumps_icntl_";
+  const auto at = option.find(key);
+  if (at == std::string::npos || (at > 0 && option[at - 1] != '_')) return false;
+  const std::string n = option.substr(at + key.size());
+  return !n.empty() && n.find_first_not_of("0123456789") == std::string::npos;
+}
+
+/// The range of PetscInt, as "from -2147483648 to 2147483647".
+std::string intRange()
+{
+  return "from " + std::to_string((long long)PETSC_MIN_INT) + " to " +
+         std::to_string((long long)PETSC_MAX_INT);
+}
+
+/// Whether `text`, if it is a number in decimal digits, fits a PetscInt. PETSc's parser
+/// (PetscOptionsStringToInt) casts a longer number silently: -checkpoint_every 4294967297
+/// became 1, 2147483648 became -2147483648.
+bool fitsInt(const std::string &text)
+{
+  const char *begin = text.c_str();
+  char *end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(begin, &end, 10);
+  if (end == begin) return true; // a name: PETSC_DECIDE, DEFAULT ...
+  return errno != ERANGE && v >= (long long)PETSC_MIN_INT && v <= (long long)PETSC_MAX_INT;
+}
+
 /// PETSc's own parsers, without their error output: true when `text` parses.
 bool parsesAsInt(const std::string &text, PetscInt *value)
 {
@@ -91,19 +135,46 @@ bool parsesAsReal(const std::string &text, PetscReal *value)
 
 } // namespace
 
+std::string integerRangeError(const std::string &option, const std::string &value)
+{
+  const std::string name = option.substr(option.find_first_not_of('-'));
+  const bool integer =
+      isMumpsIcntl(name) || std::any_of(std::begin(kIntegerOptions), std::end(kIntegerOptions),
+                                        [&](const char *base) { return matches(name, base); });
+  if (integer && !fitsInt(value)) return "out of range, expected an integer " + intRange();
+  for (const char *base : kWholeNumberOptions) {
+    if (!matches(name, base)) continue;
+    char *end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (end != value.c_str() && std::isfinite(v) && std::fabs(v) > (double)PETSC_MAX_INT)
+      return "out of range, expected a whole number " + intRange();
+  }
+  return "";
+}
+
 PetscErrorCode checkNumericOptions(MPI_Comm comm)
 {
   std::vector<std::pair<std::string, std::string>> options;
   PetscFunctionBeginUser;
   PetscCall(allOptions(options));
   for (const auto &[name, value] : options) {
-    for (const char *base : kIntegerOptions) {
-      if (!matches(name, base)) continue;
+    PetscInt icntl = 0;
+    // MUMPS reads its controls inside the first factorisation, where a value that is no
+    // integer is reported by its own parser (reportError); one that overflows, it would take.
+    if (isMumpsIcntl(name) && parsesAsInt(value, &icntl))
+      PetscCheck(fitsInt(value), comm, PETSC_ERR_USER_INPUT,
+                 "option -%s %s: out of range, expected an integer %s", name.c_str(), value.c_str(),
+                 intRange().c_str());
+    if (std::any_of(std::begin(kIntegerOptions), std::end(kIntegerOptions),
+                    [&](const char *base) { return matches(name, base); })) {
       PetscInt v = 0;
       PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT,
                  "option -%s has no value: expected an integer", name.c_str());
       PetscCheck(parsesAsInt(value, &v), comm, PETSC_ERR_USER_INPUT,
                  "option -%s %s: expected an integer", name.c_str(), value.c_str());
+      PetscCheck(fitsInt(value), comm, PETSC_ERR_USER_INPUT,
+                 "option -%s %s: out of range, expected an integer %s", name.c_str(), value.c_str(),
+                 intRange().c_str());
       if (name == "ts_max_steps")
         PetscCheck(v > 0, comm, PETSC_ERR_USER_INPUT,
                    "option -ts_max_steps %s: must be > 0 (the most steps the run may take)",
@@ -116,6 +187,13 @@ PetscErrorCode checkNumericOptions(MPI_Comm comm)
       if (name == "solver_auto_threshold")
         PetscCheck(v >= 0, comm, PETSC_ERR_USER_INPUT,
                    "option -solver_auto_threshold %s: must be >= 0 (unknowns)", value.c_str());
+    }
+    for (const char *base : kWholeNumberOptions) {
+      if (!matches(name, base)) continue;
+      PetscReal v = 0;
+      PetscCheck(!parsesAsReal(value, &v) || std::fabs(v) <= (PetscReal)PETSC_MAX_INT, comm,
+                 PETSC_ERR_USER_INPUT, "option -%s %s: out of range, expected a whole number %s",
+                 name.c_str(), value.c_str(), intRange().c_str());
     }
     for (const char *base : kRealOptions) {
       if (!matches(name, base)) continue;
@@ -158,6 +236,12 @@ PetscErrorCode checkOutputDirectory(MPI_Comm comm)
       error = what + ": " + failed.message();
     } else if (!std::filesystem::is_directory(dir, failed)) {
       error = what + ": it exists and is not a directory";
+    } else if (std::filesystem::exists(dir + "/checkpoints", failed) &&
+               !std::filesystem::is_directory(dir + "/checkpoints", failed)) {
+      // Found at the first checkpoint otherwise, many steps in, with a traceback.
+      error = "'" + dir + "/checkpoints' is not a directory: poroseam keeps its checkpoints " +
+              "in that folder (option -output_dir " + dir +
+              "); move the file away or choose another -output_dir";
     } else {
       const std::string probe = dir + "/.poroseam-write-test-" + std::to_string(getpid());
       const int fd =

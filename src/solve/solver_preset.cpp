@@ -1,9 +1,12 @@
 #include "poroseam/solver_preset.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
+#include <vector>
 
 #ifndef POROSEAM_SOLVER_DIR
 #error "POROSEAM_SOLVER_DIR (the folder of the solver presets) must be defined by the build"
@@ -63,6 +66,28 @@ PetscErrorCode insertUnset(MPI_Comm comm, const std::string &file)
 
 } // namespace
 
+std::string solverPresetFile(const std::string &name)
+{
+  if (!validName(name)) return "";
+  const std::string file = std::string(POROSEAM_SOLVER_DIR) + "/" + name + ".opts";
+  struct stat info;
+  return stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode) ? file : "";
+}
+
+std::string solverPresetList()
+{
+  std::vector<std::string> names;
+  std::error_code failed;
+  for (const auto &entry : std::filesystem::directory_iterator(POROSEAM_SOLVER_DIR, failed))
+    if (entry.path().extension() == ".opts" && validName(entry.path().stem().string()))
+      names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  std::string list;
+  for (const auto &n : names)
+    list += (list.empty() ? "" : ", ") + n;
+  return list.empty() ? "(none)" : list;
+}
+
 PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns)
 {
   char buffer[256] = "";
@@ -104,10 +129,10 @@ PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns)
              "-solver_preset %s: expected auto or the name of a file in %s (letters, digits, _ "
              "and -)",
              buffer, POROSEAM_SOLVER_DIR);
-  const std::string file = std::string(POROSEAM_SOLVER_DIR) + "/" + name + ".opts";
-  struct stat info;
-  PetscCheck(stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode), comm, PETSC_ERR_USER_INPUT,
-             "-solver_preset %s: no preset file %s", name.c_str(), file.c_str());
+  const std::string file = solverPresetFile(name);
+  PetscCheck(!file.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-solver_preset %s: no preset file %s/%s.opts (the presets: %s)", name.c_str(),
+             POROSEAM_SOLVER_DIR, name.c_str(), solverPresetList().c_str());
   PetscCall(insertUnset(comm, file));
   PetscCall(PetscPrintf(comm, "solver preset %s%s\n", name.c_str(), why.c_str()));
   PetscFunctionReturn(0);
