@@ -227,7 +227,16 @@ PetscErrorCode findCheckpoint(MPI_Comm comm, const std::string &dir, int step, s
   for (int k : steps) {
     const std::string candidate = where + "/" + checkpointName(k);
     std::string damage;
-    PetscCall(verifyCheckpoint(comm, candidate, &damage));
+    int regular = 0; // HDF5 would wait forever on a FIFO of that name
+    if (rank == 0) {
+      std::error_code failed;
+      regular = std::filesystem::is_regular_file(candidate, failed);
+    }
+    PetscCallMPI(MPI_Bcast(&regular, 1, MPI_INT, 0, comm));
+    if (regular)
+      PetscCall(verifyCheckpoint(comm, candidate, &damage));
+    else
+      damage = "not a regular file";
     if (damage.empty()) {
       for (const auto &[name, why] : damaged)
         PetscCall(PetscPrintf(comm,
