@@ -2,19 +2,19 @@
 
 #include "poroseam/disk_space.hpp"
 
+#include "restart_check.hpp"
+
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <petscviewerhdf5.h>
 #include <regex>
+#include <utility>
 #include <vector>
 
 namespace poroseam {
 namespace simulation_detail {
 namespace {
-
-/// Format of the file; a checkpoint of another version is refused, not misread.
-/// 2: the interface history holds the accumulated plastic slip (5 values per point).
-constexpr PetscInt kVersion = 2;
 
 std::string checkpointDir(const std::string &output_dir)
 {
@@ -70,6 +70,9 @@ PetscErrorCode writeValues(PetscViewer viewer, MPI_Comm comm, const char *name,
   PetscCall(VecRestoreArray(v, &a));
   PetscCall(VecView(v, viewer));
   PetscCall(VecDestroy(&v));
+  std::string sum;
+  PetscCall(valuesChecksum(comm, values, n, &sum));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, name, "checksum", PETSC_STRING, sum.c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -97,6 +100,17 @@ PetscErrorCode readValues(PetscViewer viewer, MPI_Comm comm, const char *name, P
   values.assign(a, a + n);
   PetscCall(VecRestoreArrayRead(v, &a));
   PetscCall(VecDestroy(&v));
+  // findCheckpoint verified the file; this catches one changed since.
+  std::string sum;
+  char *stored = nullptr;
+  PetscCall(valuesChecksum(comm, values.data(), n, &sum));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, name, "checksum", PETSC_STRING, nullptr, &stored));
+  const bool same = sum == stored;
+  PetscCall(PetscFree(stored));
+  PetscCheck(same, comm, PETSC_ERR_USER_INPUT,
+             "checkpoint dataset '%s' no longer matches its checksum: the file changed while the "
+             "restart read it",
+             name);
   PetscFunctionReturn(0);
 }
 
@@ -160,22 +174,17 @@ PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
   }
   PetscCall(writeValues(viewer, comm, "output_times", times.data(),
                         rank == 0 ? (PetscInt)times.size() : 0));
-  const PetscInt version = kVersion, ranks = size, step = run.step,
-                 output_count = (PetscInt)times.size();
-  double t, next_dt;
-  PetscCall(TSGetTime(run.ts, &t));
-  PetscCall(TSGetTimeStep(run.ts, &next_dt));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "version", PETSC_INT, &version));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "ranks", PETSC_INT, &ranks));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "step", PETSC_INT, &step));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "output_count", PETSC_INT, &output_count));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "time", PETSC_REAL, &t));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "next_dt", PETSC_REAL, &next_dt));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "last_dt", PETSC_REAL, &run.last_dt));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "first_contraction", PETSC_REAL,
-                                          &run.first_contraction));
-  PetscCall(
-      PetscViewerHDF5WriteAttribute(viewer, "/", "integrator", PETSC_STRING, run.time.name()));
+  CheckpointHeader header;
+  header.ranks = size, header.step = run.step, header.output_count = (PetscInt)times.size();
+  PetscCall(TSGetTime(run.ts, &header.time));
+  PetscCall(TSGetTimeStep(run.ts, &header.next_dt));
+  header.last_dt = run.last_dt, header.first_contraction = run.first_contraction;
+  header.integrator = run.time.name();
+  // What a restart must keep (restart_check.hpp): the run's options, the content of the files
+  // they name, and the output files it continues.
+  header.options = run.given_options, header.option_files = run.given_option_files;
+  PetscCall(presentOutputFiles(comm, run.scene.output_dir, &header.output_files));
+  PetscCall(writeHeader(viewer, header));
   PetscCall(PetscViewerDestroy(&viewer)); // collective: the file is complete on every rank
   int ok = 1;
   if (rank == 0) {
@@ -195,7 +204,7 @@ PetscErrorCode findCheckpoint(MPI_Comm comm, const std::string &dir, int step, s
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   const std::string where = checkpointDir(dir);
-  int found = -1;
+  std::vector<int> steps; // newest first (a .partial file is a checkpoint never completed)
   if (rank == 0) {
     std::error_code failed;
     const std::regex pattern("step-([0-9]{6})\\.h5");
@@ -204,49 +213,99 @@ PetscErrorCode findCheckpoint(MPI_Comm comm, const std::string &dir, int step, s
       const std::string name = entry.path().filename().string();
       if (!std::regex_match(name, m, pattern)) continue;
       const int k = std::stoi(m[1].str());
-      if (step < 0 ? k > found : k == step) found = k;
+      if (step < 0 || k == step) steps.push_back(k);
     }
+    std::sort(steps.rbegin(), steps.rend());
   }
-  PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, comm));
+  int count = (int)steps.size();
+  PetscCallMPI(MPI_Bcast(&count, 1, MPI_INT, 0, comm));
+  steps.resize(count);
+  if (count) PetscCallMPI(MPI_Bcast(steps.data(), count, MPI_INT, 0, comm));
   if (step < 0)
-    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(count > 0, comm, PETSC_ERR_USER_INPUT,
                "-restart %s: no checkpoint in %s (a run writes them with -checkpoint_every N, "
                "and when it stops early)",
                dir.c_str(), where.c_str());
   else
-    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(count > 0, comm, PETSC_ERR_USER_INPUT,
                "-restart_step %d: %s has no checkpoint of step %d", step, where.c_str(), step);
-  *path = where + "/" + checkpointName(found);
+  // The newest whole one. A damaged checkpoint (a disk error, a copy cut short) would
+  // continue another computation, or stop HDF5 with a traceback.
+  std::string skipped;                                      // "step-000020.h5 (why), ..."
+  std::vector<std::pair<std::string, std::string>> damaged; // warned about once one is whole
+  for (int k : steps) {
+    const std::string candidate = where + "/" + checkpointName(k);
+    std::string damage;
+    int regular = 0; // HDF5 would wait forever on a FIFO of that name
+    if (rank == 0) {
+      std::error_code failed;
+      regular = std::filesystem::is_regular_file(candidate, failed);
+    }
+    PetscCallMPI(MPI_Bcast(&regular, 1, MPI_INT, 0, comm));
+    if (regular)
+      PetscCall(verifyCheckpoint(comm, candidate, &damage));
+    else
+      damage = "not a regular file";
+    if (damage.empty()) {
+      for (const auto &[name, why] : damaged)
+        PetscCall(PetscPrintf(comm,
+                              "poroseam: warning: checkpoint %s is damaged (%s): restarting from "
+                              "%s instead\n",
+                              name.c_str(), why.c_str(), checkpointName(k).c_str()));
+      *path = candidate;
+      PetscFunctionReturn(0);
+    }
+    PetscCheck(step < 0, comm, PETSC_ERR_USER_INPUT,
+               "-restart_step %d: checkpoint %s is damaged (%s): choose another step, or leave "
+               "out -restart_step for the latest whole checkpoint",
+               step, candidate.c_str(), damage.c_str());
+    damaged.emplace_back(candidate, damage);
+    skipped += (skipped.empty() ? "" : ", ") + checkpointName(k) + " (" + damage + ")";
+  }
+  SETERRQ(comm, PETSC_ERR_USER_INPUT,
+          "-restart %s: no whole checkpoint in %s, all %d are damaged: %s; start the run anew "
+          "(without -restart)",
+          dir.c_str(), where.c_str(), count, skipped.c_str());
+}
+
+PetscErrorCode readCheckpointHeader(MPI_Comm comm, const std::string &path,
+                                    CheckpointHeader *header)
+{
+  PetscMPIInt size;
+  PetscViewer viewer;
+  bool intact = false;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(PetscViewerHDF5Open(comm, path.c_str(), FILE_MODE_READ, &viewer));
+  PetscCall(readHeader(viewer, header, &intact));
+  PetscCall(PetscViewerDestroy(&viewer));
+  PetscCheck(header->version == kCheckpointVersion, comm, PETSC_ERR_USER_INPUT,
+             "checkpoint %s: format version %d, this poroseam reads version %d", path.c_str(),
+             (int)header->version, (int)kCheckpointVersion);
+  PetscCheck(intact, comm, PETSC_ERR_USER_INPUT,
+             "checkpoint %s: its attributes do not match their checksum (the file changed while "
+             "the restart read it)",
+             path.c_str());
+  PetscCheck(header->ranks == size, comm, PETSC_ERR_USER_INPUT,
+             "checkpoint %s was written by %d MPI ranks: restart it on %d (mpiexec -n %d); a "
+             "checkpoint holds each rank's part of the mesh as it was partitioned",
+             path.c_str(), (int)header->ranks, (int)size, (int)header->ranks);
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, CheckpointInfo *info)
 {
   MPI_Comm comm = PetscObjectComm((PetscObject)run.dm);
-  PetscMPIInt rank, size;
+  PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCallMPI(MPI_Comm_size(comm, &size));
+  CheckpointHeader header;
+  PetscCall(readCheckpointHeader(comm, path, &header));
+  PetscCheck(header.integrator == run.time.name(), comm, PETSC_ERR_USER_INPUT,
+             "checkpoint %s was written with %s; this run integrates with %s (-ts_type)",
+             path.c_str(), header.integrator.c_str(), run.time.name());
   PetscViewer viewer;
   PetscCall(PetscViewerHDF5Open(comm, path.c_str(), FILE_MODE_READ, &viewer));
-  PetscInt version = 0, ranks = 0, step = 0, output_count = 0;
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "version", PETSC_INT, nullptr, &version));
-  PetscCheck(version == kVersion, comm, PETSC_ERR_USER_INPUT,
-             "checkpoint %s: format version %d, this poroseam reads version %d", path.c_str(),
-             (int)version, (int)kVersion);
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "ranks", PETSC_INT, nullptr, &ranks));
-  PetscCheck(ranks == size, comm, PETSC_ERR_USER_INPUT,
-             "checkpoint %s was written by %d MPI ranks: restart it on %d (mpiexec -n %d); a "
-             "checkpoint holds each rank's part of the mesh as it was partitioned",
-             path.c_str(), (int)ranks, (int)size, (int)ranks);
-  char *integrator = nullptr;
-  PetscCall(
-      PetscViewerHDF5ReadAttribute(viewer, "/", "integrator", PETSC_STRING, nullptr, &integrator));
-  const std::string written_by = integrator;
-  PetscCall(PetscFree(integrator));
-  PetscCheck(written_by == run.time.name(), comm, PETSC_ERR_USER_INPUT,
-             "checkpoint %s was written with %s; this run integrates with %s (-ts_type)",
-             path.c_str(), written_by.c_str(), run.time.name());
   {
     double mine[3], theirs_local[3];
     std::vector<double> theirs;
@@ -283,25 +342,20 @@ PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, Checkpoi
                          (PetscInt)run.problem.skeletonHistoryValues(), skeleton));
     PetscCall(run.problem.restoreSkeletonHistory(skeleton));
   }
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, nullptr, &step));
-  PetscCall(
-      PetscViewerHDF5ReadAttribute(viewer, "/", "output_count", PETSC_INT, nullptr, &output_count));
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, nullptr, &info->time));
-  PetscCall(
-      PetscViewerHDF5ReadAttribute(viewer, "/", "next_dt", PETSC_REAL, nullptr, &info->next_dt));
-  PetscCall(
-      PetscViewerHDF5ReadAttribute(viewer, "/", "last_dt", PETSC_REAL, nullptr, &run.last_dt));
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "first_contraction", PETSC_REAL, nullptr,
-                                         &run.first_contraction));
   {
     std::vector<double> times;
+    const PetscInt output_count = header.output_count;
     PetscCall(readValues(viewer, comm, "output_times", rank == 0 ? output_count : 0, times));
     times.resize(output_count);
     PetscCallMPI(MPI_Bcast(times.data(), (int)output_count, MPI_DOUBLE, 0, comm));
     info->output_times = times;
   }
   PetscCall(PetscViewerDestroy(&viewer));
-  info->step = (int)step;
+  info->step = (int)header.step;
+  info->time = header.time;
+  info->next_dt = header.next_dt;
+  run.last_dt = header.last_dt;
+  run.first_contraction = header.first_contraction;
   // The last accepted local state, with the prescribed values of its time.
   PetscCall(DMGlobalToLocal(run.dm, X, INSERT_VALUES, run.previous));
   PetscCall(run.problem.insertBoundaryValues(info->time, run.previous));
@@ -365,9 +419,9 @@ PetscErrorCode clearEarlierRun(MPI_Comm comm, const std::string &dir)
     std::error_code ignored;
     // interfaces.xmf: the single index of earlier versions, now interface_cells.xmf and
     // interface_points.xmf.
-    for (const char *name :
-         {"fields.h5", "fields.xmf", "interfaces.h5", "interfaces.xmf", "interface_cells.xmf",
-          "interface_points.xmf", "timeseries.csv", "timeseries.csv.units"})
+    std::vector<std::string> names = outputFileNames();
+    names.emplace_back("interfaces.xmf");
+    for (const std::string &name : names)
       fs::remove(fs::path(dir) / name, ignored);
     const fs::path checkpoints = fs::path(dir) / "checkpoints";
     if (fs::is_directory(checkpoints, ignored)) {

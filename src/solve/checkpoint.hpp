@@ -7,6 +7,7 @@
 // Internal to src/solve.
 #pragma once
 
+#include "checkpoint_integrity.hpp"
 #include "run.hpp"
 
 #include <string>
@@ -17,9 +18,16 @@ namespace simulation_detail {
 /// Writes the checkpoint of the last accepted step (run.step, solution X). Collective.
 PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path);
 
-/// The checkpoint file of `dir` (an output directory) for step `step`, or the latest one when
-/// step < 0; a PETSC_ERR_USER_INPUT error naming the options when there is none. Collective.
+/// The checkpoint file of `dir` (an output directory) for step `step`, or the latest whole one
+/// when step < 0: a damaged one (checkpoint_integrity.hpp) is named in a warning and the one
+/// before it used. A PETSC_ERR_USER_INPUT error naming the options when there is none, when
+/// none is whole, or when that of `step` is damaged. Collective.
 PetscErrorCode findCheckpoint(MPI_Comm comm, const std::string &dir, int step, std::string *path);
+
+/// The header of the (whole) checkpoint `path`; refuses, in one line, a checkpoint of another
+/// format version or written by another number of ranks. Collective.
+PetscErrorCode readCheckpointHeader(MPI_Comm comm, const std::string &path,
+                                    CheckpointHeader *header);
 
 /// What a checkpoint says about the run besides the vectors.
 struct CheckpointInfo {

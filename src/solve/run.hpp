@@ -81,6 +81,9 @@ struct Run {
   /// the step of the last one written (-1: none), and the signals that ask a run to stop.
   int checkpoint_every = 0;
   int checkpoint_step = -1;
+  /// What a checkpoint keeps for a restart to compare (restart_check.hpp): the options given
+  /// to the run and the content hashes of the files they name.
+  std::string given_options, given_option_files;
   StopRequest stop;
   int stop_signal = 0; ///< the signal that stopped the run (0: none)
 };

@@ -3,6 +3,7 @@
 #include "run.hpp"
 
 #include "checkpoint.hpp"
+#include "restart_check.hpp"
 
 #include "poroseam/field_writer.hpp"
 #include "poroseam/interface_writer.hpp"
@@ -327,6 +328,9 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(registerLogEvents(&run.events));
   run.problem.setLogEvents(run.events);
+  // The options as given, before poroseam adds its own: what a checkpoint keeps and a restart
+  // compares (restart_check.hpp).
+  PetscCall(givenOptions(comm, &run.given_options, &run.given_option_files));
   PetscCall(readMeshOptions(comm, run.scene));
   RestartOptions restart;
   PetscCall(readCheckpointOptions(comm, run, &restart));
@@ -341,6 +345,11 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
     restart = RestartOptions();
     PetscCall(scratch.begin(comm, &run.scene.output_dir));
   }
+  // A restart that cannot continue its run is refused before anything in its directory changes.
+  std::string checkpoint_path;
+  if (restart.restart)
+    PetscCall(chooseRestartCheckpoint(comm, restart, run.given_options, run.given_option_files,
+                                      &checkpoint_path));
   { // rank 0 creates it; every rank learns whether that worked, so none waits for the others
     std::error_code failed;
     if (rank == 0) std::filesystem::create_directories(run.scene.output_dir, failed);
@@ -394,11 +403,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(VecDuplicate(X, &run.last_increment));
   PetscCall(VecSet(run.last_increment, 0.0));
   CheckpointInfo resumed;
-  std::string checkpoint_path;
-  if (restart.restart) {
-    PetscCall(findCheckpoint(comm, restart.dir, restart.step, &checkpoint_path));
-    PetscCall(readCheckpoint(run, checkpoint_path, X, &resumed));
-  }
+  if (restart.restart) PetscCall(readCheckpoint(run, checkpoint_path, X, &resumed));
 
   PetscCall(TSCreate(comm, &run.ts));
   PetscCall(TSSetDM(run.ts, run.dm));
@@ -452,6 +457,9 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCheck(run.nominal_dt > 0.0, comm, PETSC_ERR_USER_INPUT, "-ts_dt %g: must be > 0",
              run.nominal_dt);
   if (restart.restart) {
+    PetscReal t_end;
+    PetscCall(TSGetMaxTime(run.ts, &t_end));
+    PetscCall(checkFinalTime(comm, t_end, resumed.time, checkpoint_path));
     // Where the checkpoint was: its time, its step count (-ts_max_steps counts all steps),
     // and its next step (smaller than -ts_dt while growing back after a cut-back).
     PetscCall(TSSetTime(run.ts, resumed.time));
