@@ -84,12 +84,14 @@ def truncate(path):
 
 
 def snapshot(out):
-    """Content hashes of every file in the output directory (the mesh folder aside)."""
+    """Content hashes of every file in the output directory (the mesh folder aside, and the
+    lock file .poroseam.lock, which every run that opens the directory rewrites with its pid:
+    docs/outputs.md)."""
     found = {}
     for root, dirs, files in os.walk(out):
         dirs[:] = [d for d in dirs if d != "mesh"]
         for name in files:
-            if name.endswith(".txt"):  # this driver's logs
+            if name.endswith(".txt") or name == ".poroseam.lock":  # this driver's logs; the lock
                 continue
             path = os.path.join(root, name)
             with open(path, "rb") as f:
