@@ -134,8 +134,8 @@ PetscErrorCode checkInterfacesInside(DM dm, const Scene &scene, DMLabel faceSets
       if (outer) {
         std::ostringstream msg;
         msg << "interface '" << in.name << "': " << outer << " of the " << total
-            << " faces of its face group '" << in.surfaces[s]
-            << "' (-interface_" << in.name << "_surfaces) lie on the outer boundary of the "
+            << " faces of its face group '" << in.surfaces[s] << "' (-interface_" << in.name
+            << "_surfaces) lie on the outer boundary of the "
             << "mesh, with a cell on one side only (the first near (" << where[0] << ", "
             << where[1] << ", " << where[2] << ")): an interface must lie inside the mesh, "
             << "between two cells; for a boundary use -boundaries";

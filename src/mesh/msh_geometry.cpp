@@ -1,0 +1,202 @@
+#include "poroseam/msh_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace poroseam {
+namespace {
+
+/// Relative tolerance: two nodes closer than this times the mesh's diameter coincide; a cell
+/// whose size is below it times its longest edge (to the power of its dimension) is degenerate.
+constexpr double kRelative = 1e-10;
+
+using Vec3 = std::array<double, 3>;
+
+Vec3 sub(const Vec3 &a, const Vec3 &b)
+{
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec3 cross(const Vec3 &a, const Vec3 &b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec3 &a, const Vec3 &b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+double norm(const Vec3 &a)
+{
+  return std::sqrt(dot(a, a));
+}
+
+std::string point(const Vec3 &x)
+{
+  std::ostringstream s;
+  s << "(" << x[0] << ", " << x[1] << ", " << x[2] << ")";
+  return s.str();
+}
+
+} // namespace
+
+bool MshGeometry::node(long long tag, double x, double y, double z)
+{
+  if (!index_.emplace(tag, x_.size()).second) return false;
+  const double c[3] = {x, y, z};
+  for (int k = 0; k < 3; ++k) {
+    lo_[k] = x_.empty() ? c[k] : std::min(lo_[k], c[k]);
+    hi_[k] = x_.empty() ? c[k] : std::max(hi_[k], c[k]);
+  }
+  x_.push_back({x, y, z});
+  tags_.push_back(tag);
+  diameter_ = -1;
+  return true;
+}
+
+double MshGeometry::diameter() const
+{
+  if (diameter_ < 0)
+    diameter_ =
+        std::sqrt((hi_[0] - lo_[0]) * (hi_[0] - lo_[0]) + (hi_[1] - lo_[1]) * (hi_[1] - lo_[1]) +
+                  (hi_[2] - lo_[2]) * (hi_[2] - lo_[2]));
+  return diameter_;
+}
+
+std::string MshGeometry::element(long long tag, long long type, const std::vector<long long> &nodes,
+                                 long long physical)
+{
+  std::vector<Vec3> p;
+  for (long long n : nodes)
+    p.push_back(x_[index_.at(n)]);
+  int dim = type == 15 ? 0 : type == 1 ? 1 : (type == 2 || type == 3) ? 2 : 3;
+  if (physical >= 0) used_.insert({dim, physical});
+  if (dim == 0) return "";
+  const char *name = type == 1   ? "line"
+                     : type == 2 ? "triangle"
+                     : type == 3 ? "quadrangle"
+                     : type == 4 ? "tetrahedron"
+                                 : "hexahedron";
+  // the longest edge between consecutive nodes (and across, for simplices): the cell's scale
+  double h = 0;
+  for (size_t a = 0; a < p.size(); ++a)
+    for (size_t b = a + 1; b < p.size(); ++b)
+      h = std::max(h, norm(sub(p[a], p[b])));
+  std::ostringstream nodes_text;
+  for (size_t a = 0; a < nodes.size(); ++a)
+    nodes_text << (a ? " " : "") << nodes[a];
+  const std::string which = std::string(name) + " element " + std::to_string(tag) + " (nodes " +
+                            nodes_text.str() + ", near " + point(p[0]) + ")";
+  const std::string degenerate = which + " is degenerate: its " +
+                                 (dim == 1   ? "length"
+                                  : dim == 2 ? "area"
+                                             : "volume") +
+                                 " is zero (coincident or aligned nodes); fix the mesh";
+  if (h <= kRelative * diameter()) return degenerate;
+  const double scale = std::pow(h, dim), tol = kRelative * scale;
+  if (type == 2) {
+    if (0.5 * norm(cross(sub(p[1], p[0]), sub(p[2], p[0]))) <= tol) return degenerate;
+  } else if (type == 4) {
+    if (std::fabs(dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]))) / 6 <= tol)
+      return degenerate;
+  } else if (type == 3) {
+    // The bilinear map is one-to-one only when the Jacobian keeps its sign at all four
+    // corners: a folded (bow-tie) or non-convex quadrangle has corners of both signs.
+    Vec3 c[4];
+    int largest = 0;
+    for (int i = 0; i < 4; ++i) {
+      c[i] = cross(sub(p[(i + 1) % 4], p[i]), sub(p[(i + 3) % 4], p[i]));
+      if (norm(c[i]) > norm(c[largest])) largest = i;
+    }
+    if (0.5 * norm(cross(sub(p[2], p[0]), sub(p[3], p[1]))) <= tol) return degenerate;
+    const Vec3 ref = c[largest];
+    for (int i = 0; i < 4; ++i)
+      if (dot(c[i], ref) / norm(ref) < -tol)
+        return which + " is folded (self-intersecting) or not convex: its corner at node " +
+               std::to_string(nodes[i]) +
+               " turns the other way from the others (the Jacobian changes sign inside it); " +
+               "fix the node order or the node positions";
+  } else if (type == 5) {
+    // Gmsh's order: 0-1-2-3 bottom, 4-5-6-7 top; vertex (a, b, c) of the unit cube.
+    static const int at[2][2][2] = {{{0, 4}, {3, 7}}, {{1, 5}, {2, 6}}};
+    double positive = 0, negative = 0;
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b)
+        for (int cc = 0; cc < 2; ++cc) {
+          const Vec3 dx = sub(p[at[1][b][cc]], p[at[0][b][cc]]);
+          const Vec3 dy = sub(p[at[a][1][cc]], p[at[a][0][cc]]);
+          const Vec3 dz = sub(p[at[a][b][1]], p[at[a][b][0]]);
+          const double j = dot(cross(dx, dy), dz);
+          if (j > tol) positive += 1;
+          if (j < -tol) negative += 1;
+        }
+    if (positive == 0 && negative == 0) return degenerate;
+    if (positive > 0 && negative > 0)
+      return which + " is folded (self-intersecting) or not convex: the Jacobian at its " +
+             "corners changes sign; fix the node order or the node positions";
+    if (positive + negative < 8) return degenerate;
+  } else if (type == 1) {
+    // h is its length, checked above
+  }
+  return "";
+}
+
+std::string MshGeometry::finish(const std::vector<PhysicalName> &names, int mesh_dim) const
+{
+  for (const auto &n : names)
+    if (!used_.count({n.dim, (long long)n.tag}))
+      return "physical group '" + n.name + "' (dimension " + std::to_string(n.dim) + ", tag " +
+             std::to_string(n.tag) + ") has no elements: a group that names nothing (a " +
+             "geometry not meshed, or a wrong tag); remove it from $PhysicalNames or give " +
+             "it elements";
+  const double tol = kRelative * diameter();
+  if (mesh_dim == 2)
+    for (size_t i = 0; i < x_.size(); ++i)
+      if (std::fabs(x_[i][2]) > tol)
+        return "node " + std::to_string(tags_[i]) + " of this 2D mesh has z = " +
+               [&] {
+                 std::ostringstream s;
+                 s << x_[i][2];
+                 return s.str();
+               }() +
+               ": a 2D mesh must lie in the plane z = 0 (poroseam uses x and y only and " +
+               "would drop z)";
+  // Coincident nodes: a hash of cells of size tol, each node compared with its 27 cells.
+  if (tol > 0) {
+    struct Key {
+      long long i, j, k;
+      bool operator==(const Key &o) const { return i == o.i && j == o.j && k == o.k; }
+    };
+    struct Hash {
+      size_t operator()(const Key &k) const
+      {
+        return std::hash<long long>()(k.i * 73856093LL ^ k.j * 19349663LL ^ k.k * 83492791LL);
+      }
+    };
+    std::unordered_map<Key, std::vector<size_t>, Hash> cells;
+    auto keyOf = [&](const Vec3 &x) {
+      return Key{(long long)std::floor((x[0] - lo_[0]) / tol),
+                 (long long)std::floor((x[1] - lo_[1]) / tol),
+                 (long long)std::floor((x[2] - lo_[2]) / tol)};
+    };
+    // with tol = 1e-10 diameter the cell indices reach 1e10: they fit a long long
+    for (size_t n = 0; n < x_.size(); ++n) {
+      const Key k = keyOf(x_[n]);
+      for (long long di = -1; di <= 1; ++di)
+        for (long long dj = -1; dj <= 1; ++dj)
+          for (long long dk = -1; dk <= 1; ++dk) {
+            const auto found = cells.find(Key{k.i + di, k.j + dj, k.k + dk});
+            if (found == cells.end()) continue;
+            for (size_t m : found->second)
+              if (norm(sub(x_[m], x_[n])) <= tol)
+                return "nodes " + std::to_string(tags_[m]) + " and " + std::to_string(tags_[n]) +
+                       " coincide at " + point(x_[n]) +
+                       ": the cells on either side would not be joined; merge them (gmsh " +
+                       "Coherence) or remove the duplicate";
+          }
+      cells[k].push_back(n);
+    }
+  }
+  return "";
+}
+
+} // namespace poroseam
