@@ -35,11 +35,18 @@ public:
   std::string finish(const std::vector<PhysicalName> &names, int mesh_dim) const;
 
 private:
+  static int nodesOf(char type) { return type == 1 ? 2 : type == 2 ? 3 : type == 5 ? 8 : 4; }
+  static int dimOf(char type) { return type == 1 ? 1 : type == 2 || type == 3 ? 2 : 3; }
   double diameter() const;
+  std::string checkFaces(const std::vector<PhysicalName> &names, int mesh_dim) const;
   std::unordered_map<long long, size_t> index_;
   std::vector<long long> tags_;
   std::vector<std::array<double, 3>> x_;
-  std::set<std::pair<int, long long>> used_; // (dimension, physical tag) of some element
+  std::set<std::pair<int, long long>> used_;
+  // elements of dimension >= 1: Gmsh type, tag, physical tag, node indices (flat)
+  std::vector<char> types_;
+  std::vector<long long> tags_of_elements_, physical_of_elements_;
+  std::vector<unsigned> element_nodes_; // (dimension, physical tag) of some element
   double lo_[3] = {0, 0, 0}, hi_[3] = {0, 0, 0};
   mutable double diameter_ = -1;
 };

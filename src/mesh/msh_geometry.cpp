@@ -70,6 +70,13 @@ std::string MshGeometry::element(long long tag, long long type, const std::vecto
     p.push_back(x_[index_.at(n)]);
   int dim = type == 15 ? 0 : type == 1 ? 1 : (type == 2 || type == 3) ? 2 : 3;
   if (physical >= 0) used_.insert({dim, physical});
+  if (dim > 0) { // kept (as node indices) for the check that faces are faces of cells
+    types_.push_back((char)type);
+    tags_of_elements_.push_back(tag);
+    physical_of_elements_.push_back(physical);
+    for (long long n : nodes)
+      element_nodes_.push_back((unsigned)index_.at(n));
+  }
   if (dim == 0) return "";
   const char *name = type == 1   ? "line"
                      : type == 2 ? "triangle"
@@ -93,6 +100,9 @@ std::string MshGeometry::element(long long tag, long long type, const std::vecto
                                  " is zero (coincident or aligned nodes); fix the mesh";
   if (h <= kRelative * diameter()) return degenerate;
   const double scale = std::pow(h, dim), tol = kRelative * scale;
+  for (size_t a = 0; a < p.size(); ++a) // two of its nodes at one place (or the same node twice)
+    for (size_t b = a + 1; b < p.size(); ++b)
+      if (norm(sub(p[a], p[b])) <= kRelative * h) return degenerate;
   if (type == 2) {
     if (0.5 * norm(cross(sub(p[1], p[0]), sub(p[2], p[0]))) <= tol) return degenerate;
   } else if (type == 4) {
@@ -107,14 +117,16 @@ std::string MshGeometry::element(long long tag, long long type, const std::vecto
       c[i] = cross(sub(p[(i + 1) % 4], p[i]), sub(p[(i + 3) % 4], p[i]));
       if (norm(c[i]) > norm(c[largest])) largest = i;
     }
-    if (0.5 * norm(cross(sub(p[2], p[0]), sub(p[3], p[1]))) <= tol) return degenerate;
     const Vec3 ref = c[largest];
+    if (norm(ref) <= tol) return degenerate;
     for (int i = 0; i < 4; ++i)
       if (dot(c[i], ref) / norm(ref) < -tol)
         return which + " is folded (self-intersecting) or not convex: its corner at node " +
                std::to_string(nodes[i]) +
                " turns the other way from the others (the Jacobian changes sign inside it); " +
                "fix the node order or the node positions";
+    for (int i = 0; i < 4; ++i) // three aligned nodes: a corner with a zero Jacobian
+      if (dot(c[i], ref) / norm(ref) <= tol) return degenerate;
   } else if (type == 5) {
     // Gmsh's order: 0-1-2-3 bottom, 4-5-6-7 top; vertex (a, b, c) of the unit cube.
     static const int at[2][2][2] = {{{0, 4}, {3, 7}}, {{1, 5}, {2, 6}}};
@@ -196,6 +208,72 @@ std::string MshGeometry::finish(const std::vector<PhysicalName> &names, int mesh
       cells[k].push_back(n);
     }
   }
+  return checkFaces(names, mesh_dim);
+}
+
+std::string MshGeometry::checkFaces(const std::vector<PhysicalName> &names, int mesh_dim) const
+{
+  // Every element of dimension mesh_dim - 1 (a boundary or interface face) must be a face of
+  // a cell: PETSc's reader finds its DMPlex face by joining its vertices, and a line across a
+  // quadrangle's diagonal labels the cell itself, one between unrelated nodes stops the reader.
+  if (mesh_dim < 2) return "";
+  struct KeyHash {
+    size_t operator()(const std::vector<unsigned> &k) const
+    {
+      size_t h = 0;
+      for (unsigned v : k)
+        h = h * 1000003u ^ v;
+      return h;
+    }
+  };
+  std::unordered_map<std::vector<unsigned>, size_t, KeyHash> faces; // sorted nodes -> element
+  std::vector<size_t> offset(types_.size() + 1, 0);
+  for (size_t e = 0; e < types_.size(); ++e)
+    offset[e + 1] = offset[e] + nodesOf(types_[e]);
+  for (size_t e = 0; e < types_.size(); ++e)
+    if (dimOf(types_[e]) == mesh_dim - 1) {
+      std::vector<unsigned> key(element_nodes_.begin() + offset[e],
+                                element_nodes_.begin() + offset[e + 1]);
+      std::sort(key.begin(), key.end());
+      faces.emplace(key, e);
+    }
+  if (faces.empty()) return "";
+  // the faces of each linear cell type, as local node numbers (Gmsh's orders)
+  static const std::vector<std::vector<int>> tri = {{0, 1}, {1, 2}, {2, 0}},
+                                             quad = {{0, 1}, {1, 2}, {2, 3}, {3, 0}},
+                                             tet = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}},
+                                             hex = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                                    {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::vector<char> found(types_.size(), 0);
+  std::vector<unsigned> key;
+  for (size_t e = 0; e < types_.size(); ++e) {
+    if (dimOf(types_[e]) != mesh_dim) continue;
+    const auto &local = types_[e] == 2 ? tri : types_[e] == 3 ? quad : types_[e] == 4 ? tet : hex;
+    for (const auto &f : local) {
+      key.clear();
+      for (int a : f)
+        key.push_back(element_nodes_[offset[e] + a]);
+      std::sort(key.begin(), key.end());
+      const auto hit = faces.find(key);
+      if (hit != faces.end()) found[hit->second] = 1;
+    }
+  }
+  for (size_t e = 0; e < types_.size(); ++e)
+    if (dimOf(types_[e]) == mesh_dim - 1 && !found[e]) {
+      std::string group = "no physical group";
+      for (const auto &n : names)
+        if (n.dim == mesh_dim - 1 && n.tag == physical_of_elements_[e])
+          group = "physical group '" + n.name + "'";
+      std::ostringstream nodes;
+      for (size_t k = offset[e]; k < offset[e + 1]; ++k)
+        nodes << (k > offset[e] ? " " : "") << tags_[element_nodes_[k]];
+      return std::string(mesh_dim == 2 ? "line" : "surface") + " element " +
+             std::to_string(tags_of_elements_[e]) + " (nodes " + nodes.str() + ", " + group +
+             ", near " + point(x_[element_nodes_[offset[e]]]) + ") is not an " +
+             (mesh_dim == 2 ? "edge" : "face") + " of any cell of the mesh: a boundary or " +
+             "interface must follow the cells' edges (embed the curve or surface in the " +
+             "geometry before meshing)";
+    }
   return "";
 }
 
