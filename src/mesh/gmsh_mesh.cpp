@@ -76,7 +76,8 @@ std::string runGmsh(const std::string &geo, double size_factor, const std::strin
   if (end.signal == SIGKILL || (!why.empty() && logSaysOutOfMemory(log)))
     return "out of memory while meshing '" + geo + "' at -mesh_size_factor " + factor + " (gmsh " +
            (end.signal == SIGKILL
-                ? "was killed by SIGKILL, the kernel's " + std::string("out-of-memory killer")
+                ? std::string("was killed by SIGKILL, the signal of the kernel's out-of-memory "
+                              "killer")
                 : std::string("ran out of memory")) +
            "): give a larger -mesh_size_factor (the element count grows as factor^-dim); see " +
            log;

@@ -88,26 +88,31 @@ std::string MshGeometry::element(long long tag, long long type, const std::vecto
   for (size_t a = 0; a < p.size(); ++a)
     for (size_t b = a + 1; b < p.size(); ++b)
       h = std::max(h, norm(sub(p[a], p[b])));
-  std::ostringstream nodes_text;
-  for (size_t a = 0; a < nodes.size(); ++a)
-    nodes_text << (a ? " " : "") << nodes[a];
-  const std::string which = std::string(name) + " element " + std::to_string(tag) + " (nodes " +
-                            nodes_text.str() + ", near " + point(p[0]) + ")";
-  const std::string degenerate = which + " is degenerate: its " +
-                                 (dim == 1   ? "length"
-                                  : dim == 2 ? "area"
-                                             : "volume") +
-                                 " is zero (coincident or aligned nodes); fix the mesh";
-  if (h <= kRelative * diameter()) return degenerate;
+  // the messages are made only for a bad element (this runs for every element of the file)
+  auto which = [&]() {
+    std::ostringstream nodes_text;
+    for (size_t a = 0; a < nodes.size(); ++a)
+      nodes_text << (a ? " " : "") << nodes[a];
+    return std::string(name) + " element " + std::to_string(tag) + " (nodes " + nodes_text.str() +
+           ", near " + point(p[0]) + ")";
+  };
+  auto degenerate = [&]() {
+    return which() + " is degenerate: its " +
+           (dim == 1   ? "length"
+            : dim == 2 ? "area"
+                       : "volume") +
+           " is zero (coincident or aligned nodes); fix the mesh";
+  };
+  if (h <= kRelative * diameter()) return degenerate();
   const double scale = std::pow(h, dim), tol = kRelative * scale;
   for (size_t a = 0; a < p.size(); ++a) // two of its nodes at one place (or the same node twice)
     for (size_t b = a + 1; b < p.size(); ++b)
-      if (norm(sub(p[a], p[b])) <= kRelative * h) return degenerate;
+      if (norm(sub(p[a], p[b])) <= kRelative * h) return degenerate();
   if (type == 2) {
-    if (0.5 * norm(cross(sub(p[1], p[0]), sub(p[2], p[0]))) <= tol) return degenerate;
+    if (0.5 * norm(cross(sub(p[1], p[0]), sub(p[2], p[0]))) <= tol) return degenerate();
   } else if (type == 4) {
     if (std::fabs(dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]))) / 6 <= tol)
-      return degenerate;
+      return degenerate();
   } else if (type == 3) {
     // The bilinear map is one-to-one only when the Jacobian keeps its sign at all four
     // corners: a folded (bow-tie) or non-convex quadrangle has corners of both signs.
@@ -118,15 +123,15 @@ std::string MshGeometry::element(long long tag, long long type, const std::vecto
       if (norm(c[i]) > norm(c[largest])) largest = i;
     }
     const Vec3 ref = c[largest];
-    if (norm(ref) <= tol) return degenerate;
+    if (norm(ref) <= tol) return degenerate();
     for (int i = 0; i < 4; ++i)
       if (dot(c[i], ref) / norm(ref) < -tol)
-        return which + " is folded (self-intersecting) or not convex: its corner at node " +
+        return which() + " is folded (self-intersecting) or not convex: its corner at node " +
                std::to_string(nodes[i]) +
                " turns the other way from the others (the Jacobian changes sign inside it); " +
                "fix the node order or the node positions";
     for (int i = 0; i < 4; ++i) // three aligned nodes: a corner with a zero Jacobian
-      if (dot(c[i], ref) / norm(ref) <= tol) return degenerate;
+      if (dot(c[i], ref) / norm(ref) <= tol) return degenerate();
   } else if (type == 5) {
     // Gmsh's order: 0-1-2-3 bottom, 4-5-6-7 top; vertex (a, b, c) of the unit cube.
     static const int at[2][2][2] = {{{0, 4}, {3, 7}}, {{1, 5}, {2, 6}}};
@@ -141,11 +146,11 @@ std::string MshGeometry::element(long long tag, long long type, const std::vecto
           if (j > tol) positive += 1;
           if (j < -tol) negative += 1;
         }
-    if (positive == 0 && negative == 0) return degenerate;
+    if (positive == 0 && negative == 0) return degenerate();
     if (positive > 0 && negative > 0)
-      return which + " is folded (self-intersecting) or not convex: the Jacobian at its " +
+      return which() + " is folded (self-intersecting) or not convex: the Jacobian at its " +
              "corners changes sign; fix the node order or the node positions";
-    if (positive + negative < 8) return degenerate;
+    if (positive + negative < 8) return degenerate();
   } else if (type == 1) {
     // h is its length, checked above
   }
@@ -184,7 +189,7 @@ std::string MshGeometry::finish(const std::vector<PhysicalName> &names, int mesh
         return std::hash<long long>()(k.i * 73856093LL ^ k.j * 19349663LL ^ k.k * 83492791LL);
       }
     };
-    std::unordered_map<Key, std::vector<size_t>, Hash> cells;
+    std::unordered_multimap<Key, size_t, Hash> cells; // ~40 bytes a node
     auto keyOf = [&](const Vec3 &x) {
       return Key{(long long)std::floor((x[0] - lo_[0]) / tol),
                  (long long)std::floor((x[1] - lo_[1]) / tol),
@@ -196,16 +201,15 @@ std::string MshGeometry::finish(const std::vector<PhysicalName> &names, int mesh
       for (long long di = -1; di <= 1; ++di)
         for (long long dj = -1; dj <= 1; ++dj)
           for (long long dk = -1; dk <= 1; ++dk) {
-            const auto found = cells.find(Key{k.i + di, k.j + dj, k.k + dk});
-            if (found == cells.end()) continue;
-            for (size_t m : found->second)
-              if (norm(sub(x_[m], x_[n])) <= tol)
+            const auto range = cells.equal_range(Key{k.i + di, k.j + dj, k.k + dk});
+            for (auto it = range.first; it != range.second; ++it)
+              if (const size_t m = it->second; norm(sub(x_[m], x_[n])) <= tol)
                 return "nodes " + std::to_string(tags_[m]) + " and " + std::to_string(tags_[n]) +
                        " coincide at " + point(x_[n]) +
                        ": the cells on either side would not be joined; merge them (gmsh " +
                        "Coherence) or remove the duplicate";
           }
-      cells[k].push_back(n);
+      cells.emplace(k, n);
     }
   }
   return checkFaces(names, mesh_dim);

@@ -54,7 +54,7 @@ PetscErrorCode checkBodiesSupported(DM dm, const Scene &scene)
     DMLabel faceSets;
     PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
     for (const auto &bc : scene.conditions) {
-      if (bc.kind != BcKind::displacement || !faceSets) continue;
+      if (bc.kind != BcKind::displacement || !faceSets || bc.component >= dim) continue;
       IS is = nullptr;
       PetscCall(DMLabelGetStratumIS(faceSets, bc.tag, &is));
       if (!is) continue;
