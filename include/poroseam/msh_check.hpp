@@ -16,7 +16,7 @@ struct MshSummary {
   bool binary = false; // file-type 1
   int dim = 0;         // largest dimension of an element
   long nodes = 0;
-  long cells = 0;      // elements of dimension `dim`
+  long cells = 0; // elements of dimension `dim`
 };
 
 /// Reads the whole file at `path` and checks it against the MSH 2.2 and 4.1 formats (ASCII

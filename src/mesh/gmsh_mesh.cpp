@@ -1,7 +1,9 @@
 #include "poroseam/collective_check.hpp"
 #include "poroseam/external_program.hpp"
+#include "poroseam/geo_check.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/mesh.hpp"
+#include "poroseam/mesh_limits.hpp"
 #include "poroseam/msh_check.hpp"
 #include "poroseam/partition.hpp"
 #include "poroseam/reference_element.hpp"
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -37,16 +40,54 @@ bool endsWith(const std::string &s, const std::string &suffix)
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-/// Runs gmsh on a .geo at a size factor, writing `msh` (MSH 2.2 ASCII); "" or what failed.
-std::string runGmsh(const std::string &geo, double size_factor, const std::string &msh,
-                    const std::string &log)
+std::string factorText(double size_factor)
 {
   std::ostringstream factor;
   factor.precision(17);
   factor << size_factor;
+  return factor.str();
+}
+
+/// True when gmsh's log says it ran out of memory (std::bad_alloc, or its own message).
+bool logSaysOutOfMemory(const std::string &log)
+{
+  std::ifstream in(log);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.find("bad_alloc") != std::string::npos ||
+        line.find("out of memory") != std::string::npos ||
+        line.find("Out of memory") != std::string::npos)
+      return true;
+  return false;
+}
+
+/// Runs gmsh on a .geo at a size factor, writing `msh` (MSH 2.2 ASCII); "" or what failed.
+std::string runGmsh(const std::string &geo, double size_factor, const std::string &msh,
+                    const std::string &log, double time_limit)
+{
+  const std::string factor = factorText(size_factor);
   // An argument vector, no shell: paths with quotes or $(...) are only names.
-  const std::string why = runProgram(
-      {"gmsh", "-3", "-v", "1", "-format", "msh22", "-clscale", factor.str(), "-o", msh, geo}, log);
+  ProgramEnd end;
+  const std::string why =
+      runProgram({"gmsh", "-3", "-v", "1", "-format", "msh22", "-clscale", factor, "-o", msh, geo},
+                 log, time_limit, &end);
+  std::ostringstream limit;
+  limit << time_limit;
+  if (end.timed_out)
+    return "gmsh was still meshing '" + geo + "' after " + limit.str() + " s (-mesh_time_limit " +
+           limit.str() + ") and was stopped: a .geo with an endless " +
+           "loop, or a mesh that takes longer (raise -mesh_time_limit, or give a larger " +
+           "-mesh_size_factor than " + factor + "; see " + log + ")";
+  // The kernel's out-of-memory killer sends SIGKILL; gmsh's own allocations throw bad_alloc
+  // (then it aborts: SIGABRT, or an error exit with the message in its log).
+  if (end.signal == SIGKILL || (!why.empty() && logSaysOutOfMemory(log)))
+    return "out of memory while meshing '" + geo + "' at -mesh_size_factor " + factor + " (gmsh " +
+           (end.signal == SIGKILL
+                ? std::string("was killed by SIGKILL, the signal of the kernel's out-of-memory "
+                              "killer")
+                : std::string("ran out of memory")) +
+           "): give a larger -mesh_size_factor (the element count grows as factor^-dim); see " +
+           log;
   if (!why.empty() || !fileExists(msh))
     return "gmsh failed to mesh '" + geo + "' (" + (why.empty() ? "no mesh written" : why) +
            "; see " + log + ")";
@@ -58,17 +99,21 @@ std::string formatCount(double n)
   std::ostringstream s;
   s.precision(n < 1e6 ? 6 : 2);
   if (n >= 1e6) s << std::scientific;
-  s << n;
+  s << std::round(n);
   return s.str();
 }
 
-/// Meshes a .geo with gmsh into work_dir; returns the .msh path or an error message. Below
-/// a size factor of 0.5 the element count is estimated first from a mesh at factor 1 (cells
-/// x factor^-dim; gmsh's -clscale scales every size), and a mesh above `max_elements` is
-/// refused before gmsh spends minutes and gigabytes on it.
-std::string meshGeometry(const std::string &geo, double size_factor, long max_elements,
-                         const std::string &work_dir, std::string &msh)
+/// Meshes a .geo with gmsh into work_dir; returns the .msh path or an error message. The
+/// .geo (a program) is read first: commands that run programs or write files are refused
+/// (geo_check.hpp). Below a size factor of 0.5 the element and node counts are estimated
+/// first from a mesh at factor 1 (x factor^-dim; gmsh's -clscale scales every size), and a
+/// mesh above `max_elements`, or one whose estimated memory exceeds the machine's, is refused
+/// before gmsh spends minutes and gigabytes on it.
+std::string meshGeometry(const std::string &geo, double size_factor, const MeshLimits &limits,
+                         const std::string &work_dir, std::string &msh, std::string *note)
 {
+  std::string why = checkGeoProgram(geo);
+  if (!why.empty()) return why;
   std::string stem = geo.substr(geo.find_last_of('/') + 1);
   stem = stem.substr(0, stem.size() - 4);
   std::error_code failed;
@@ -77,48 +122,30 @@ std::string meshGeometry(const std::string &geo, double size_factor, long max_el
   msh = work_dir + "/" + stem + ".msh";
   if (size_factor < 0.5) {
     const std::string probe = work_dir + "/" + stem + ".factor1.msh";
-    std::string why = runGmsh(geo, 1.0, probe, work_dir + "/gmsh.log");
+    why = runGmsh(geo, 1.0, probe, work_dir + "/gmsh.log", limits.time_limit);
     if (!why.empty()) return why;
     std::vector<PhysicalName> names;
     MshSummary s;
     why = checkGmshFile(probe, names, s);
     std::filesystem::remove(probe, failed);
     if (!why.empty()) return why;
-    const double estimate = (double)s.cells * std::pow(1.0 / size_factor, s.dim);
-    if (estimate > (double)max_elements) {
-      std::ostringstream f;
-      f << size_factor;
+    const double scale = std::pow(1.0 / size_factor, s.dim);
+    const double estimate = (double)s.cells * scale;
+    std::ostringstream f;
+    f << size_factor;
+    if (estimate > (double)limits.max_elements)
       return "-mesh_size_factor " + f.str() + " would make about " + formatCount(estimate) +
              " elements of dimension " + std::to_string(s.dim) + " from '" + geo + "' (" +
              std::to_string(s.cells) + " at factor 1), more than -mesh_max_elements " +
-             std::to_string(max_elements) + ": give a larger factor, or raise the limit if " +
-             "the machine can take it";
-    }
+             std::to_string(limits.max_elements) + ": give a larger factor, or raise the " +
+             "limit if the machine can take it";
+    why = checkMeshMemory(limits, (double)s.nodes * scale, s.dim,
+                          "-mesh_size_factor " + f.str() + " would make about " +
+                              formatCount(estimate) + " elements from '" + geo + "'",
+                          "give a larger -mesh_size_factor", note);
+    if (!why.empty()) return why;
   }
-  return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log");
-}
-
-/// -mesh_max_elements: the largest mesh (cells of the top dimension) poroseam makes or reads.
-PetscErrorCode readMaxElements(MPI_Comm comm, long *max_elements)
-{
-  std::string text = "2000000";
-  bool set = false;
-  PetscFunctionBeginUser;
-  *max_elements = 2000000;
-  PetscOptionsBegin(comm, nullptr, "poroseam scene: mesh size limit", kSceneDoc);
-  PetscCall(getString(PetscOptionsObject, "-mesh_max_elements",
-                      "the largest mesh (cells of the mesh dimension) poroseam makes or reads",
-                      text, &set));
-  PetscOptionsEnd();
-  if (!set) PetscFunctionReturn(0);
-  const char *buffer = text.c_str();
-  char *end = nullptr;
-  const double v = std::strtod(buffer, &end);
-  PetscCheck(end != buffer && *end == '\0' && v >= 1 && v == std::floor(v) && v < 9e18, comm,
-             PETSC_ERR_USER_INPUT, "option -mesh_max_elements %s: expected a whole number >= 1",
-             buffer[0] ? buffer : "(no value)");
-  *max_elements = (long)v;
-  PetscFunctionReturn(0);
+  return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log", limits.time_limit);
 }
 
 } // namespace
@@ -131,9 +158,10 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   // Rank 0 checks and (for .geo) meshes the file; the outcome is broadcast as text.
-  long max_elements;
-  PetscCall(readMaxElements(comm, &max_elements));
-  std::string error, msh = file;
+  MeshLimits limits;
+  PetscCall(readMeshLimits(comm, &limits));
+  const long max_elements = limits.max_elements;
+  std::string error, msh = file, note;
   std::vector<PhysicalName> found;
   if (rank == 0) {
     struct stat st;
@@ -145,7 +173,7 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
     else if (!S_ISREG(st.st_mode))
       error = what + " is not a regular file: expected a Gmsh .msh or .geo file";
     else if (endsWith(file, ".geo"))
-      error = meshGeometry(file, size_factor, max_elements, work_dir, msh);
+      error = meshGeometry(file, size_factor, limits, work_dir, msh, &note);
     else if (!endsWith(file, ".msh"))
       error = what + ": expected a Gmsh .msh or .geo file";
     // Every .msh is checked before PETSc's reader sees it (that reader trusts the file).
@@ -156,6 +184,17 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
               " elements of dimension " + std::to_string(summary.dim) +
               ", more than -mesh_max_elements " + std::to_string(max_elements) +
               " (raise the limit if the machine can take it)";
+    // The memory again from the mesh itself (a .msh given, or a factor >= 0.5), before
+    // PETSc reads it; the probe's estimate, when there was one, is said once.
+    if (error.empty() && note.empty())
+      error = checkMeshMemory(limits, (double)summary.nodes, summary.dim,
+                              "mesh file '" + msh + "' has " + std::to_string(summary.cells) +
+                                  " elements and " + std::to_string(summary.nodes) + " nodes",
+                              endsWith(file, ".geo") ? "give a larger -mesh_size_factor"
+                                                     : "give a coarser mesh",
+                              &note);
+    if (error.empty() && !note.empty())
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s\n", note.c_str()));
   }
   std::ostringstream packed;
   packed << error.size() << '\n' << error << '\n' << msh << '\n' << found.size() << '\n';

@@ -3,6 +3,7 @@
 #include "poroseam/collective_check.hpp"
 #include "poroseam/reference_element.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -134,14 +135,71 @@ PetscErrorCode checkInterfacesInside(DM dm, const Scene &scene, DMLabel faceSets
       if (outer) {
         std::ostringstream msg;
         msg << "interface '" << in.name << "': " << outer << " of the " << total
-            << " faces of its face group '" << in.surfaces[s]
-            << "' (-interface_" << in.name << "_surfaces) lie on the outer boundary of the "
+            << " faces of its face group '" << in.surfaces[s] << "' (-interface_" << in.name
+            << "_surfaces) lie on the outer boundary of the "
             << "mesh, with a cell on one side only (the first near (" << where[0] << ", "
             << where[1] << ", " << where[2] << ")): an interface must lie inside the mesh, "
             << "between two cells; for a boundary use -boundaries";
         error = msg.str();
       }
     }
+  PetscCall(checkOnAllRanks(comm, error));
+  PetscFunctionReturn(0);
+}
+
+/// Interface faces must form manifolds: where three or more meet at one ridge (a vertex in 2D,
+/// an edge in 3D: a T-junction or a star) there is no "side 1" and "side 2", and PETSc's
+/// orientation of the interface stops with a traceback. Collective; rank 0 holds the mesh.
+PetscErrorCode checkInterfaceJunctions(DM dm, const Scene &scene, DMLabel faceSets, DMLabel faces)
+{
+  MPI_Comm comm;
+  PetscInt dim;
+  std::string error;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)dm, &comm));
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscInt rStart, rEnd, fStart, fEnd;
+  PetscCall(DMPlexGetDepthStratum(dm, dim - 2, &rStart, &rEnd));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
+  std::map<PetscInt, std::vector<PetscInt>> facesAt; // ridge -> interface faces
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    PetscInt marked;
+    PetscCall(DMLabelGetValue(faces, f, &marked));
+    if (marked != 1) continue;
+    PetscInt n, *pts = nullptr;
+    PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &n, &pts));
+    for (PetscInt i = 0; i < n; ++i)
+      if (pts[2 * i] >= rStart && pts[2 * i] < rEnd) facesAt[pts[2 * i]].push_back(f);
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &n, &pts));
+  }
+  for (const auto &[ridge, list] : facesAt) {
+    if (list.size() <= 2) continue;
+    std::vector<double> x;
+    double where[3] = {0, 0, 0};
+    PetscCall(closureCoordinates(dm, ridge, x));
+    centroid(x, (int)dim, where);
+    std::vector<std::string> groups;
+    for (PetscInt f : list) {
+      PetscInt tag;
+      PetscCall(DMLabelGetValue(faceSets, f, &tag));
+      for (const auto &in : scene.interfaces)
+        for (size_t k = 0; k < in.tags.size(); ++k)
+          if (in.tags[k] == tag) {
+            const std::string g = "'" + in.surfaces[k] + "' (interface '" + in.name + "')";
+            if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
+          }
+    }
+    std::ostringstream msg;
+    msg << list.size() << " interface faces of the face group" << (groups.size() > 1 ? "s " : " ");
+    for (size_t k = 0; k < groups.size(); ++k)
+      msg << (k ? (k + 1 == groups.size() ? " and " : ", ") : "") << groups[k];
+    msg << " meet at the " << (dim == 2 ? "vertex" : "edge") << " near (" << where[0] << ", "
+        << where[1] << ", " << where[2] << "): a T-junction or crossing, where an interface "
+        << "has no two sides; the interface faces of a scene must not branch (end one "
+        << "branch short of the junction, or leave it out of the interface groups)";
+    error = msg.str();
+    break;
+  }
   PetscCall(checkOnAllRanks(comm, error));
   PetscFunctionReturn(0);
 }
@@ -181,6 +239,7 @@ PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
     }
   PetscCall(DMPlexLabelComplete(*dm, faces));
   PetscCall(checkInterfacesInside(*dm, scene, faceSets));
+  PetscCall(checkInterfaceJunctions(*dm, scene, faceSets, faces));
 
   // The sequence of DMPlexCreateHybridMesh, with faces marked explicitly (finding them from
   // vertices picks wrong faces in thin parts; see docs/petsc.md).

@@ -1,5 +1,8 @@
 #include "poroseam/msh_check.hpp"
 
+#include "poroseam/msh_cursor.hpp"
+#include "poroseam/msh_geometry.hpp"
+
 #include <cctype>
 #include <cerrno>
 #include <climits>
@@ -21,29 +24,52 @@ namespace {
 int nodesOfType(long type, int *dim)
 {
   switch (type) {
-  case 15: *dim = 0; return 1; // point
-  case 1: *dim = 1; return 2;  // line
-  case 2: *dim = 2; return 3;  // triangle
-  case 3: *dim = 2; return 4;  // quadrangle
-  case 4: *dim = 3; return 4;  // tetrahedron
-  case 5: *dim = 3; return 8;  // hexahedron
-  default: return -1;
+  case 15:
+    *dim = 0;
+    return 1; // point
+  case 1:
+    *dim = 1;
+    return 2; // line
+  case 2:
+    *dim = 2;
+    return 3; // triangle
+  case 3:
+    *dim = 2;
+    return 4; // quadrangle
+  case 4:
+    *dim = 3;
+    return 4; // tetrahedron
+  case 5:
+    *dim = 3;
+    return 8; // hexahedron
+  default:
+    return -1;
   }
 }
 
 const char *typeName(long type)
 {
   switch (type) {
-  case 6: return "prism";
-  case 7: return "pyramid";
-  case 8: return "3-node line";
-  case 9: return "6-node triangle";
-  case 10: return "9-node quadrangle";
-  case 11: return "10-node tetrahedron";
-  case 12: return "27-node hexahedron";
-  case 16: return "8-node quadrangle";
-  case 17: return "20-node hexahedron";
-  default: return "unknown type";
+  case 6:
+    return "prism";
+  case 7:
+    return "pyramid";
+  case 8:
+    return "3-node line";
+  case 9:
+    return "6-node triangle";
+  case 10:
+    return "9-node quadrangle";
+  case 11:
+    return "10-node tetrahedron";
+  case 12:
+    return "27-node hexahedron";
+  case 16:
+    return "8-node quadrangle";
+  case 17:
+    return "20-node hexahedron";
+  default:
+    return "unknown type";
   }
 }
 
@@ -51,98 +77,7 @@ struct Failure {
   std::string what;
 };
 
-/// A cursor over the file's bytes: tokens and lines for ASCII parts, raw values for binary.
-class Cursor {
-public:
-  explicit Cursor(const std::string &data) : d_(data) {}
-
-  bool atEnd() const { return pos_ >= d_.size(); }
-  size_t pos() const { return pos_; }
-
-  /// Where the cursor is, for messages: "line N" (ASCII) or "byte N" (binary data).
-  std::string where(bool binary) const
-  {
-    if (binary) return "byte " + std::to_string(pos_);
-    long line = 1;
-    for (size_t i = 0; i < pos_ && i < d_.size(); ++i)
-      line += d_[i] == '\n';
-    return "line " + std::to_string(line);
-  }
-
-  void skipSpace()
-  {
-    while (pos_ < d_.size() && std::isspace((unsigned char)d_[pos_]))
-      ++pos_;
-  }
-
-  /// The next whitespace-separated token; "" at the end of the file.
-  std::string token()
-  {
-    skipSpace();
-    const size_t start = pos_;
-    while (pos_ < d_.size() && !std::isspace((unsigned char)d_[pos_]))
-      ++pos_;
-    return d_.substr(start, pos_ - start);
-  }
-
-  /// The rest of the current line (without '\r'), moving past its '\n'.
-  std::string line()
-  {
-    const size_t start = pos_;
-    while (pos_ < d_.size() && d_[pos_] != '\n')
-      ++pos_;
-    std::string s = d_.substr(start, pos_ - start);
-    if (pos_ < d_.size()) ++pos_;
-    while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '\t'))
-      s.pop_back();
-    return s;
-  }
-
-  bool integer(long long *v)
-  {
-    const std::string t = token();
-    if (t.empty()) return false;
-    errno = 0;
-    char *end = nullptr;
-    *v = std::strtoll(t.c_str(), &end, 10);
-    return errno == 0 && end && *end == '\0';
-  }
-
-  bool real(double *v)
-  {
-    const std::string t = token();
-    if (t.empty()) return false;
-    char *end = nullptr;
-    *v = std::strtod(t.c_str(), &end);
-    return end && *end == '\0';
-  }
-
-  bool raw(void *out, size_t n)
-  {
-    if (d_.size() - pos_ < n || pos_ > d_.size()) return false;
-    std::memcpy(out, d_.data() + pos_, n);
-    pos_ += n;
-    return true;
-  }
-
-  /// Moves just past the next occurrence of `marker` at the start of a line; false if none.
-  bool skipPast(const std::string &marker)
-  {
-    size_t at = pos_;
-    while (true) {
-      at = d_.find(marker, at);
-      if (at == std::string::npos) return false;
-      if (at == 0 || d_[at - 1] == '\n') break;
-      at += marker.size();
-    }
-    pos_ = at + marker.size();
-    return true;
-  }
-
-private:
-  const std::string &d_;
-  size_t pos_ = 0;
-};
+using msh::Cursor;
 
 class MshChecker {
 public:
@@ -177,7 +112,8 @@ public:
         entities = true;
       } else if (name == "Nodes") {
         if (nodes) fail("a second $Nodes section");
-        if (s_.version == 41 && !entities) fail("$Nodes before $Entities (MSH 4.1 needs $Entities first)");
+        if (s_.version == 41 && !entities)
+          fail("$Nodes before $Entities (MSH 4.1 needs $Entities first)");
         readNodes();
         nodes = true;
       } else if (name == "Elements") {
@@ -198,8 +134,9 @@ public:
     if (!elements) fail("no $Elements section (the file is truncated, or not a mesh)", false, 0);
     if (s_.cells == 0) fail("no elements", false, 0);
     if (!physical)
-      fail("no $PhysicalNames: name the regions and boundaries as Gmsh physical groups", false,
-           0);
+      fail("no $PhysicalNames: name the regions and boundaries as Gmsh physical groups", false, 0);
+    const std::string why = geometry_.finish(names_, s_.dim);
+    if (!why.empty()) fail(why, false, 0);
   }
 
 private:
@@ -221,8 +158,8 @@ private:
     const std::string t = c_.token();
     if (t != "$End" + name)
       fail(t.empty() ? "the file ends inside $" + name + " (truncated?)"
-                     : "expected $End" + name + ", found '" + printable(t) +
-                           "' (a count in $" + name + " does not match its entries)");
+                     : "expected $End" + name + ", found '" + printable(t) + "' (a count in $" +
+                           name + " does not match its entries)");
   }
 
   long long integer(const char *what, long long min = 0)
@@ -253,7 +190,8 @@ private:
     const double v = std::strtod(t.c_str(), &end);
     if (!end || *end != '\0')
       fail(std::string("expected ") + what + " (a number), found '" + printable(t) + "'");
-    if (!std::isfinite(v)) fail(std::string(what) + " is " + printable(t) + ", not a finite number");
+    if (!std::isfinite(v))
+      fail(std::string(what) + " is " + printable(t) + ", not a finite number");
     return v;
   }
 
@@ -330,7 +268,8 @@ private:
       count[d] = s_.binary ? binSize("an entity count") : integer("an entity count");
     for (int d = 0; d < 4; ++d)
       for (long long i = 0; i < count[d]; ++i) {
-        const long long tag = s_.binary ? bin<int32_t>("an entity tag") : integer("an entity tag", LLONG_MIN);
+        const long long tag =
+            s_.binary ? bin<int32_t>("an entity tag") : integer("an entity tag", LLONG_MIN);
         for (int k = 0; k < (d == 0 ? 3 : 6); ++k)
           if (s_.binary) {
             const double x = bin<double>("an entity coordinate");
@@ -344,9 +283,10 @@ private:
           fail("entity " + std::to_string(tag) + " has " + std::to_string(physical) +
                    " physical tags (at most 16)",
                s_.binary);
+        std::vector<long long> &groups = physicals_[d][tag];
         for (long long k = 0; k < physical; ++k)
-          s_.binary ? (void)bin<int32_t>("a physical tag")
-                    : (void)integer("a physical tag", LLONG_MIN);
+          groups.push_back(s_.binary ? bin<int32_t>("a physical tag")
+                                     : integer("a physical tag", LLONG_MIN));
         if (d > 0) {
           const long long bounding =
               s_.binary ? binSize("a bounding entity count") : integer("a bounding entity count");
@@ -360,10 +300,23 @@ private:
     expectEnd("Entities");
   }
 
-  void addNode(long long tag, bool binary_part)
+  /// A node tag before its coordinates: >= 1, and not absurdly large (PETSc's reader sizes
+  /// arrays by the largest tag: 2e9 in a file of 4 nodes takes gigabytes, then aborts).
+  void checkNodeTag(long long tag, long long count, bool binary_part)
   {
     if (tag < 1) fail("node tag " + std::to_string(tag) + " must be >= 1", binary_part);
-    if (!nodes_.insert(tag).second)
+    if (tag > MshGeometry::maxNodeTag(count))
+      fail("node tag " + std::to_string(tag) + " is far beyond the file's " +
+               std::to_string(count) + " nodes (at most " +
+               std::to_string(MshGeometry::maxNodeTag(count)) +
+               "): PETSc's reader sizes its arrays by the largest tag; number the nodes from 1",
+           binary_part);
+    if (geometry_.has(tag)) fail("node " + std::to_string(tag) + " is defined twice", binary_part);
+  }
+
+  void addNode(long long tag, const double x[3], bool binary_part)
+  {
+    if (!geometry_.node(tag, x[0], x[1], x[2]))
       fail("node " + std::to_string(tag) + " is defined twice", binary_part);
   }
 
@@ -373,15 +326,20 @@ private:
       const long long n = integer("the number of nodes");
       if (s_.binary) c_.line();
       for (long long i = 0; i < n; ++i) {
+        double x[3];
         if (s_.binary) {
-          addNode(bin<int32_t>("a node tag"), true);
+          const long long tag = bin<int32_t>("a node tag");
+          checkNodeTag(tag, n, true);
           for (int k = 0; k < 3; ++k)
-            if (!std::isfinite(bin<double>("a node coordinate")))
+            if (!std::isfinite(x[k] = bin<double>("a node coordinate")))
               fail("a node coordinate is not finite", true);
+          addNode(tag, x, true);
         } else {
-          addNode(integer("a node tag", LLONG_MIN), false);
+          const long long tag = integer("a node tag", LLONG_MIN);
+          checkNodeTag(tag, n, false);
           for (int k = 0; k < 3; ++k)
-            real("a node coordinate");
+            x[k] = real("a node coordinate");
+          addNode(tag, x, false);
         }
       }
       s_.nodes = n;
@@ -428,21 +386,27 @@ private:
         fail("the node blocks hold more than the " + std::to_string(total) + " nodes declared",
              s_.binary);
       seen += n;
+      std::vector<long long> tags((size_t)n);
       for (long long i = 0; i < n; ++i) {
         const long long tag = s_.binary ? binSize("a node tag") : integer("a node tag", LLONG_MIN);
         if (tag < min_tag || tag > max_tag)
           fail("node tag " + std::to_string(tag) + " outside the declared range " +
                    std::to_string(min_tag) + ".." + std::to_string(max_tag),
                s_.binary);
-        addNode(tag, s_.binary);
+        checkNodeTag(tag, total, s_.binary);
+        tags[i] = tag;
       }
-      for (long long i = 0; i < 3 * n; ++i)
-        if (s_.binary) {
-          if (!std::isfinite(bin<double>("a node coordinate")))
-            fail("a node coordinate is not finite", true);
-        } else {
-          real("a node coordinate");
-        }
+      for (long long i = 0; i < n; ++i) {
+        double x[3];
+        for (int k = 0; k < 3; ++k)
+          if (s_.binary) {
+            if (!std::isfinite(x[k] = bin<double>("a node coordinate")))
+              fail("a node coordinate is not finite", true);
+          } else {
+            x[k] = real("a node coordinate");
+          }
+        addNode(tags[i], x, s_.binary);
+      }
     }
     if (seen != total)
       fail("the node blocks hold " + std::to_string(seen) + " nodes, " + std::to_string(total) +
@@ -452,13 +416,16 @@ private:
     expectEnd("Nodes");
   }
 
-  void element(long long tag, long long type, const std::vector<long long> &nodes, bool binary)
+  void element(long long tag, long long type, const std::vector<long long> &nodes,
+               long long physical, bool binary)
   {
     for (long long node : nodes)
-      if (!nodes_.count(node))
+      if (!geometry_.has(node))
         fail("element " + std::to_string(tag) + " refers to node " + std::to_string(node) +
                  ", which is not in $Nodes",
              binary);
+    const std::string why = geometry_.element(tag, type, nodes, physical);
+    if (!why.empty()) fail(why, binary);
     int dim = 0;
     nodesOfType(type, &dim);
     if (dim > s_.dim) s_.dim = dim, s_.cells = 0;
@@ -489,12 +456,15 @@ private:
           const int n = checkedType(type, false);
           const long long ntags = integer("an element's number of tags");
           if (ntags > 16) fail("element " + std::to_string(tag) + " has more than 16 tags");
-          for (long long k = 0; k < ntags; ++k)
-            integer("an element tag value", LLONG_MIN);
+          long long physical = -1; // MSH 2.2: the first tag is the physical group
+          for (long long k = 0; k < ntags; ++k) {
+            const long long v = integer("an element tag value", LLONG_MIN);
+            if (k == 0) physical = v;
+          }
           nodes.resize(n);
           for (int k = 0; k < n; ++k)
             nodes[k] = integer("an element's node", LLONG_MIN);
-          element(tag, type, nodes, false);
+          element(tag, type, nodes, physical, false);
         }
       } else {
         c_.line();
@@ -513,11 +483,14 @@ private:
           nodes.resize(n);
           for (long long i = 0; i < count; ++i) {
             const long long tag = bin<int32_t>("an element tag");
-            for (long long k = 0; k < ntags; ++k)
-              (void)bin<int32_t>("an element tag value");
+            long long physical = -1;
+            for (long long k = 0; k < ntags; ++k) {
+              const long long v = bin<int32_t>("an element tag value");
+              if (k == 0) physical = v;
+            }
             for (int k = 0; k < n; ++k)
               nodes[k] = bin<int32_t>("an element's node");
-            element(tag, type, nodes, true);
+            element(tag, type, nodes, physical, true);
           }
         }
       }
@@ -567,11 +540,19 @@ private:
              s_.binary);
       seen += count;
       nodes.resize(n);
+      // MSH 4.1: the physical groups of an element are those of its entity
+      const auto groups = physicals_[dim].find(entity);
+      const std::vector<long long> none;
+      const std::vector<long long> &physical =
+          groups == physicals_[dim].end() ? none : groups->second;
       for (long long i = 0; i < count; ++i) {
         const long long tag = s_.binary ? binSize("an element tag") : integer("an element tag");
         for (int k = 0; k < n; ++k)
-          nodes[k] = s_.binary ? binSize("an element's node") : integer("an element's node", LLONG_MIN);
-        element(tag, type, nodes, s_.binary);
+          nodes[k] =
+              s_.binary ? binSize("an element's node") : integer("an element's node", LLONG_MIN);
+        element(tag, type, nodes, physical.empty() ? -1 : physical[0], s_.binary);
+        for (size_t k = 1; k < physical.size(); ++k)
+          geometry_.usePhysical((int)dim, physical[k]); // the entity's other groups
       }
     }
     if (seen != total)
@@ -586,7 +567,8 @@ private:
   MshSummary &s_;
   bool swap_ = false;
   std::set<long long> entities_[4];
-  std::unordered_set<long long> nodes_;
+  std::map<long long, std::vector<long long>> physicals_[4]; // entity -> its physical tags
+  MshGeometry geometry_;
 };
 
 } // namespace
@@ -603,8 +585,7 @@ std::string checkGmshFile(const std::string &path, std::vector<PhysicalName> &na
   if (!in) return file + ": cannot be read (" + std::strerror(errno) + ")";
   std::string data;
   data.resize((size_t)st.st_size);
-  if (st.st_size > 0 && !in.read(&data[0], st.st_size))
-    return file + ": cannot be read";
+  if (st.st_size > 0 && !in.read(&data[0], st.st_size)) return file + ": cannot be read";
   names.clear();
   summary = MshSummary{};
   try {

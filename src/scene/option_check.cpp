@@ -15,6 +15,8 @@ namespace {
 const char *const kSceneNames[] = {"mesh",
                                    "mesh_size_factor",
                                    "mesh_max_elements",
+                                   "mesh_time_limit",
+                                   "mesh_memory_check",
                                    "regions",
                                    "boundaries",
                                    "interfaces",

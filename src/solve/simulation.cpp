@@ -22,6 +22,7 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/schur_selfp.hpp"
 #include "poroseam/solver_preset.hpp"
+#include "poroseam/support_check.hpp"
 #include "poroseam/time_integration.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
@@ -369,6 +370,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
                          run.scene.output_dir + "/mesh", &run.dm, &names, &dim));
   PetscCall(readSceneOptions(comm, names, dim, run.scene));
   PetscCall(splitInterfaces(&run.dm, run.scene));
+  PetscCall(checkBodiesSupported(run.dm, run.scene)); // no part free of every support
   PetscCall(markLayoutLabels(run.dm, run.scene));
   // Before distribution: rank 0 holds both sides of every interface face.
   PetscCall(warnAboutPenalties(run.dm, run.scene));

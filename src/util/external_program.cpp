@@ -1,6 +1,8 @@
 #include "poroseam/external_program.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +14,7 @@
 #include <string>
 #include <sys/prctl.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 extern char **environ;
@@ -53,8 +56,12 @@ __attribute__((constructor)) void launchChildIfAsked()
 
 } // namespace
 
-std::string runProgram(const std::vector<std::string> &argv, const std::string &log_path)
+std::string runProgram(const std::vector<std::string> &argv, const std::string &log_path,
+                       double time_limit, ProgramEnd *end)
 {
+  ProgramEnd ignored;
+  if (!end) end = &ignored;
+  *end = ProgramEnd();
   if (argv.empty()) return "no program to run";
   // Not the program itself but this executable as its launcher (launchChildIfAsked above),
   // which ties the program's life to ours. No shell anywhere: arguments go as they are.
@@ -65,8 +72,7 @@ std::string runProgram(const std::vector<std::string> &argv, const std::string &
   const ssize_t length = readlink("/proc/self/exe", self, sizeof self - 1);
   if (length <= 0) return "cannot find poroseam's own executable to start '" + argv[0] + "'";
   self[length] = '\0';
-  std::vector<char *> args = {self,
-                              const_cast<char *>(kLauncherFlag),
+  std::vector<char *> args = {self, const_cast<char *>(kLauncherFlag),
                               const_cast<char *>(parent.c_str())};
   for (const auto &a : argv)
     args.push_back(const_cast<char *>(a.c_str()));
@@ -81,10 +87,32 @@ std::string runProgram(const std::vector<std::string> &argv, const std::string &
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) return "cannot start '" + argv[0] + "': " + std::strerror(spawned);
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return "lost track of '" + argv[0] + "': " + std::strerror(errno);
-  if (WIFSIGNALED(status))
+  // Polls, so a program that never ends (a .geo with an endless loop) is killed at the limit.
+  const auto start = std::chrono::steady_clock::now();
+  auto pause = std::chrono::milliseconds(2);
+  while (true) {
+    const pid_t done = waitpid(pid, &status, time_limit > 0 ? WNOHANG : 0);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR)
+      return "lost track of '" + argv[0] + "': " + std::strerror(errno);
+    if (done == 0) {
+      const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
+      if (spent.count() > time_limit) {
+        kill(pid, SIGKILL);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        end->timed_out = true;
+        return "'" + argv[0] + "' was still running after its time limit and was stopped";
+      }
+      std::this_thread::sleep_for(pause);
+      pause = std::min(2 * pause, std::chrono::milliseconds(100));
+    }
+  }
+  if (WIFSIGNALED(status)) {
+    end->signal = WTERMSIG(status);
     return "'" + argv[0] + "' was killed by signal " + std::to_string(WTERMSIG(status));
+  }
+  if (WIFEXITED(status)) end->exit_status = WEXITSTATUS(status);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
     return "cannot run '" + argv[0] + "': not found (is it installed and on PATH?)";
   if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
