@@ -66,8 +66,10 @@ PetscErrorCode updateRollingCheckpoint(Run &run, Vec X, double step_wall)
   // second mpiexec leaves the ranks between its SIGTERM and its SIGKILL: a stop in the next
   // step would not be reached in time.
   const double interval = r.interval >= 0.0 ? r.interval : 9.0 * r.cost;
+  // And after every step once a stop may be near (a SIGCONT: mpiexec's warning, a second
+  // before its SIGTERM), so that the stop finds its last step on disk and only has to say so.
   int due = r.written == 0 || start - r.last_wall >= interval ||
-            (r.interval < 0.0 && step_wall >= kGrace);
+            (r.interval < 0.0 && (step_wall >= kGrace || StopRequest::warned()));
   PetscCallMPI(MPI_Bcast(&due, 1, MPI_INT, 0, PetscObjectComm((PetscObject)run.dm)));
   if (!due) PetscFunctionReturn(0);
   std::string path;

@@ -18,6 +18,8 @@ static_assert(sizeof(kSignals) / sizeof(kSignals[0]) == StopRequest::kCount,
 // process-wide state of poroseam is this flag, read by StopRequest::pending between steps,
 // and the record the handler writes (below).
 volatile std::sig_atomic_t received_signal = 0;
+/// A SIGCONT has come: mpiexec (and Slurm) send it just before their SIGTERM.
+volatile std::sig_atomic_t continued = 0;
 
 /// The run.yaml of a run stopped after its last accepted step, ready for the handler: two
 /// slots, so that rank 0 fills one while the handler may be reading the other (it can run on
@@ -107,6 +109,11 @@ extern "C" void onStopSignal(int signal)
   if (first) writeArmedRecord(signal);
 }
 
+extern "C" void onContinue(int)
+{
+  continued = 1;
+}
+
 } // namespace
 
 PetscErrorCode StopRequest::install()
@@ -128,6 +135,14 @@ PetscErrorCode StopRequest::install()
   sigemptyset(&ignore.sa_mask);
   PetscCheck(sigaction(SIGPIPE, &ignore, &previous_pipe_) == 0, PETSC_COMM_SELF, PETSC_ERR_SYS,
              "cannot ignore SIGPIPE");
+  // SIGCONT still resumes a stopped process; the handler only notes that it came.
+  continued = 0;
+  struct sigaction note = {};
+  note.sa_handler = onContinue;
+  sigemptyset(&note.sa_mask);
+  note.sa_flags = SA_RESTART;
+  PetscCheck(sigaction(SIGCONT, &note, &previous_cont_) == 0, PETSC_COMM_SELF, PETSC_ERR_SYS,
+             "cannot install the handler of SIGCONT");
   installed_ = true;
   PetscFunctionReturn(0);
 }
@@ -140,6 +155,7 @@ PetscErrorCode StopRequest::restore()
   for (int i = 0; i < kCount; ++i)
     sigaction(kSignals[i], &previous_[i], nullptr);
   sigaction(SIGPIPE, &previous_pipe_, nullptr);
+  sigaction(SIGCONT, &previous_cont_, nullptr);
   installed_ = false;
   PetscFunctionReturn(0);
 }
@@ -156,6 +172,11 @@ PetscErrorCode StopRequest::pending(MPI_Comm comm, int *signal) const
 bool StopRequest::received()
 {
   return received_signal != 0;
+}
+
+bool StopRequest::warned()
+{
+  return continued != 0 || received_signal != 0;
 }
 
 bool StopRequest::armRecord(const std::string &path, const std::string &text)

@@ -7,7 +7,8 @@
 // So that nothing depends on reaching a safe point in time, rank 0 arms, after each accepted
 // step, the run.yaml of a run stopped there: the signal handler itself writes it (open,
 // write and rename are async-signal-safe), and the checkpoint of that step is on disk already
-// (rolling_checkpoint.hpp). Internal to src/solve.
+// (rolling_checkpoint.hpp), after every step from the SIGCONT that precedes mpiexec's SIGTERM.
+// Internal to src/solve.
 #pragma once
 
 #include <petscsys.h>
@@ -37,6 +38,11 @@ public:
   /// up at once, e.g. a write to a stdout nobody reads any more).
   static bool received();
 
+  /// A stop may be near: a SIGCONT has come (Open MPI's mpiexec, like Slurm, sends the ranks
+  /// SIGCONT a second before its SIGTERM; a job resumed after SIGTSTP gets one too), or a
+  /// stop signal. No communication.
+  static bool warned();
+
   /// Rank 0: the file `text` is to be written to `path` (atomically, through path.signal.tmp)
   /// as soon as a stop signal comes, each kSignalMark replaced by the signal. False (nothing
   /// armed) if the text is longer than the handler's static buffer. Replaces the record armed
@@ -49,6 +55,7 @@ private:
   bool installed_ = false;
   struct sigaction previous_[kCount] = {}; ///< the handlers we replaced, one per signal
   struct sigaction previous_pipe_ = {};    ///< SIGPIPE's
+  struct sigaction previous_cont_ = {};    ///< SIGCONT's
 };
 
 } // namespace poroseam

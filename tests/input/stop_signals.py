@@ -119,20 +119,19 @@ def stop_run(out, extra, sig, after=AFTER, stall=False, timeout=300.0):
                             start_new_session=True)
     if stall:
         fcntl.fcntl(proc.stdout.fileno(), 1031, 4096)  # F_SETPIPE_SZ: the smallest pipe
-    text, reached = [], threading.Event()
+    text, reached = [b""], threading.Event()
     stop_reading = threading.Event()
     pattern = re.compile(rb"^step +%d " % after, re.M)
 
     def read():
-        buf = b""
         while True:
             if stop_reading.is_set():
                 return
-            chunk = proc.stdout.read1(65536) if hasattr(proc.stdout, "read1") else proc.stdout.read(1)
+            chunk = proc.stdout.read1(65536)
             if not chunk:
                 return
-            buf += chunk
-            if not reached.is_set() and pattern.search(buf):
+            text[0] += chunk
+            if not reached.is_set() and pattern.search(text[0]):
                 reached.set()
                 if stall:
                     stop_reading.set()  # nobody reads mpiexec's stdout from here on
@@ -164,16 +163,15 @@ def stop_run(out, extra, sig, after=AFTER, stall=False, timeout=300.0):
     kill_session(proc.pid)
     if not stall:
         reader.join(timeout=5)
-    buf = b""
-    try:
-        stop_reading.set()
+    stop_reading.set()
+    try:  # what is left in the pipe (all of it when nobody read after the signal)
         fcntl.fcntl(proc.stdout.fileno(), fcntl.F_SETFL, os.O_NONBLOCK)
-        buf = proc.stdout.read() or b""
+        text[0] += proc.stdout.read() or b""
     except (OSError, TypeError):
         pass
     proc.stdout.close()
     return dict(status=proc.returncode, exit_seconds=exit_seconds, left=left,
-                log=buf.decode(errors="replace"), error="")
+                log=text[0].decode(errors="replace"), error="")
 
 
 def series_rows(out):
