@@ -27,9 +27,18 @@ struct RunSummary {
   std::vector<double> peak_memory_mb; ///< per rank: the high-water mark of its resident memory
 };
 
+/// Where a running run has got: its last accepted step, recorded after each one so that the
+/// record of a run killed later says what survived and how to continue.
+struct RunProgress {
+  int step = 0;           ///< the last accepted step
+  double time = 0.0;      ///< its time [s]
+  std::string checkpoint; ///< the checkpoint of that step ("": none)
+};
+
 /// The record of a run, written by rank 0 as YAML under a temporary name and renamed, so a
 /// reader never sees half a file: at the start (ending: running), when the unknowns are known,
-/// and at the end, also when the run ends in an error. A restarted run appends its segment to
+/// after each accepted step (progress: what a killed run leaves), and at the end, also when
+/// the run ends in an error. A restarted run appends its segment to
 /// the interrupted run's record.
 class RunRecord {
 public:
@@ -39,18 +48,28 @@ public:
   /// Unknowns per field (the 'field ... unknowns' lines), written at once. Collective.
   PetscErrorCode setUnknowns(MPI_Comm comm, const std::vector<std::pair<std::string, long>> &f);
   /// The end of a run that reached its time loop's end: gathers the peak memory of every rank
-  /// (collective), prints the summary and writes the final record.
+  /// (collective), writes the final record and prints the summary. `stop_signal`: the
+  /// signal that stopped the run (0: none).
   PetscErrorCode finish(MPI_Comm comm, RunEnding ending, const std::string &message,
-                        RunSummary summary);
+                        RunSummary summary, int stop_signal = 0);
+  /// Rank 0, no communication: records the last accepted step (a 'progress' block, the run
+  /// still 'running') and writes the record; false if it could not.
+  bool progress(const RunProgress &progress);
+  /// The whole file as it would be if a stop signal (written where `signal_mark` is) ended the
+  /// run during the step after the last progress(): for StopRequest's handler.
+  std::string textIfStopped(char signal_mark) const;
   /// The end of a run stopped by an error (on any one rank): rank 0 writes what it knows, without
   /// communication, since the other ranks may not be there. No-op if begin() did not run or
   /// finish() did.
   void abandon(PetscErrorCode error);
+  /// run.yaml's path.
+  const std::string &path() const { return path_; }
   /// Wall time since begin() [s].
   double elapsed() const;
 
 private:
   std::string text() const;
+  std::string stoppedMessage(const std::string &signal) const;
   bool write() const; ///< rank 0: the whole file, atomically; false if it could not
   /// Collective: rank 0 writes; every rank fails together, naming the reason, if it could not.
   PetscErrorCode writeOnRankZero(MPI_Comm comm) const;
@@ -71,6 +90,10 @@ private:
   std::string message_;
   RunSummary summary_;
   bool has_summary_ = false;
+  RunProgress progress_;
+  bool has_progress_ = false;
+  std::string progress_at_; ///< when the last accepted step was recorded (UTC)
+  std::string signal_;      ///< the signal that stopped the run (in an armed record)
 };
 
 } // namespace poroseam

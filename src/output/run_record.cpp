@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -152,9 +153,11 @@ PetscErrorCode RunRecord::setUnknowns(MPI_Comm comm,
 }
 
 PetscErrorCode RunRecord::finish(MPI_Comm comm, RunEnding ending, const std::string &message,
-                                 RunSummary summary)
+                                 RunSummary summary, int stop_signal)
 {
   PetscFunctionBeginUser;
+  if (stop_signal)
+    signal_ = std::to_string(stop_signal) + " (SIG" + sigabbrev_np(stop_signal) + ")";
   // ru_maxrss: the process's peak resident memory in KiB (Linux), with no option needed,
   // where PetscMemoryGetMaximumUsage counts only with -memory_view.
   struct rusage usage;
@@ -171,6 +174,10 @@ PetscErrorCode RunRecord::finish(MPI_Comm comm, RunEnding ending, const std::str
   message_ = message;
   end_ = utcNow();
   finished_ = true;
+  has_progress_ = false; // the summary and the message say where it ended
+  // The record first: a stopped run may be killed, or block on a stdout nobody reads any
+  // more, while it prints.
+  PetscCall(writeOnRankZero(comm));
   double peak = 0.0;
   for (double m : summary.peak_memory_mb)
     peak = std::max(peak, m);
@@ -185,8 +192,52 @@ PetscErrorCode RunRecord::finish(MPI_Comm comm, RunEnding ending, const std::str
                         "summary: wall time %.2f s (time steps %.2f s), peak memory %.1f MB per "
                         "rank (largest of %d), record in %s\n",
                         summary.wall, summary.stepping_wall, peak, size_, path_.c_str()));
-  PetscCall(writeOnRankZero(comm));
   PetscFunctionReturn(0);
+}
+
+bool RunRecord::progress(const RunProgress &progress)
+{
+  progress_ = progress;
+  has_progress_ = true;
+  progress_at_ = utcNow();
+  if (ending_ == RunEnding::running)
+    message_ = "running, or killed: if no process of this run is left, it ended after step " +
+               std::to_string(progress.step) +
+               (progress.checkpoint.empty() ? std::string(" (no checkpoint)")
+                                            : "; continue with -restart " + output_dir_);
+  return rank_ != 0 || write();
+}
+
+std::string RunRecord::stoppedMessage(const std::string &signal) const
+{
+  char text[256];
+  std::snprintf(text, sizeof(text),
+                "stopped by signal %s during step %d, which is lost. Results up to step %d, t = "
+                "%g s, are in ",
+                signal.c_str(), progress_.step + 1, progress_.step, progress_.time);
+  std::string m = text + output_dir_;
+  if (progress_.checkpoint.empty())
+    return m + "; no checkpoint was written (-checkpoint_rolling 0): run it again";
+  return m + "; the checkpoint " + progress_.checkpoint + " remains: continue with -restart " +
+         output_dir_;
+}
+
+std::string RunRecord::textIfStopped(char signal_mark) const
+{
+  RunRecord stopped = *this;
+  stopped.ending_ = RunEnding::signal;
+  stopped.exit_status_ = -1; // killed later, or not: not ours to say
+  stopped.message_ = stoppedMessage("\x01signal\x01");
+  stopped.signal_ = std::string(1, signal_mark);
+  std::string segment = stopped.text();
+  // quoted() wrote the placeholder's control characters as "\x01": the mark goes there, in
+  // the message line only (user text elsewhere could hold the same characters).
+  const std::string escaped = "\\x01signal\\x01", key = "\n    message: ";
+  const size_t line = segment.find(key);
+  const size_t at = segment.find(escaped, line);
+  if (line != std::string::npos && at != std::string::npos && at < segment.find('\n', line + 1))
+    segment.replace(at, escaped.size(), 1, signal_mark);
+  return kHeader + earlier_ + segment;
 }
 
 void RunRecord::abandon(PetscErrorCode error)
@@ -216,8 +267,12 @@ std::string RunRecord::text() const
   PetscGetVersionNumber(&major, &minor, &sub, &release);
   y << "  - status: " << (ending_ == RunEnding::running ? "running" : "ended") << "\n";
   y << in << "ending: " << quoted(runEndingName(ending_)) << "\n";
-  if (ending_ != RunEnding::running) y << in << "exit_status: " << exit_status_ << "\n";
+  if (ending_ != RunEnding::running)
+    y << in << "exit_status: " << (exit_status_ < 0 ? "null" : std::to_string(exit_status_))
+      << "\n";
   y << in << "message: " << quoted(message_) << "\n";
+  // A stop signal in an armed record (stop_request.hpp) is written by the handler: plain text.
+  if (!signal_.empty()) y << in << "signal: \"" << signal_ << "\"\n";
   y << in << "start: " << quoted(start_) << "\n";
   y << in << "end: " << (end_.empty() ? "null" : quoted(end_)) << "\n";
   y << in << "poroseam_version: " << quoted(POROSEAM_VERSION) << "\n";
@@ -235,6 +290,18 @@ std::string RunRecord::text() const
   for (const auto &[name, n] : unknowns_)
     y << in << "  " << quoted(name) << ": " << n << "\n", total += n;
   if (!unknowns_.empty()) y << in << "  total: " << total << "\n";
+  if (has_progress_) {
+    // Rewritten after each accepted step: what a run killed now leaves, and how to go on.
+    y << in << "progress:\n";
+    y << in << "  last_step: " << progress_.step << "\n";
+    y << in << "  time: " << number(progress_.time) << "\n";
+    y << in << "  recorded: " << quoted(progress_at_) << "\n";
+    y << in
+      << "  checkpoint: " << (progress_.checkpoint.empty() ? "null" : quoted(progress_.checkpoint))
+      << "\n";
+    y << in << "  restart: "
+      << (progress_.checkpoint.empty() ? "null" : quoted("-restart " + output_dir_)) << "\n";
+  }
   if (has_summary_) {
     const RunSummary &s = summary_;
     y << in << "summary:\n";

@@ -79,6 +79,9 @@ PetscErrorCode convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscRea
   PetscFunctionBeginUser;
   PetscCall(SNESGetKSP(snes, &ksp));
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  // A stop from outside between two Newton iterations of a long step (stop_points.cpp).
+  PetscCall(stopDuringStep(run, reason));
+  if (run.step_abandoned) PetscFunctionReturn(0);
   // A user's -snes_ksp_ew (PETSc's Eisenstat-Walker forcing) wins over ours: PETSc then sets
   // the linear tolerances itself, and we leave them alone.
   PetscBool eisenstat_walker;

@@ -14,6 +14,8 @@
 #include "poroseam/time_integration.hpp"
 #include "poroseam/time_series.hpp"
 
+#include "progress_line.hpp"
+#include "rolling_checkpoint.hpp"
 #include "stop_request.hpp"
 
 #include <petscts.h>
@@ -50,8 +52,10 @@ struct Run {
   std::vector<std::vector<PetscInt>> interface_end_dofs;
   TimeSeries series; ///< timeseries.csv
   double nominal_dt = 0.0;
-  double fail_dt_above = 0.0; ///< test hook: step attempts with a larger dt fail
-  double attempted_dt = 0.0;  ///< dt of the last residual evaluation
+  double fail_dt_above = 0.0;    ///< test hook: step attempts with a larger dt fail
+  double step_delay = 0.0;       ///< test hook: each residual evaluation waits this long [s]
+  PetscInt step_delay_after = 0; ///< test hook: ... in the steps after this one
+  double attempted_dt = 0.0;     ///< dt of the last residual evaluation
   PetscInt last_snes_its = 0, last_ksp_its = 0, last_rejects = 0;
   double step_start = 0.0;
   int step = 0;
@@ -86,6 +90,16 @@ struct Run {
   std::string given_options, given_option_files;
   StopRequest stop;
   int stop_signal = 0; ///< the signal that stopped the run (0: none)
+  /// A stop from outside (stop_points.cpp): the rolling checkpoint, the newest checkpoint on
+  /// disk ("": none), the record that notes each accepted step, the step line that never
+  /// blocks, whether a stop came between two Newton iterations of a step (then abandoned),
+  /// and the step size chosen after the last accepted step.
+  RollingCheckpoint rolling;
+  std::string latest_checkpoint;
+  RunRecord *record = nullptr;
+  ProgressLine progress_line;
+  bool step_abandoned = false;
+  double accepted_next_dt = 0.0;
 };
 
 inline PetscErrorCode currentDt(Run &run, double *dt)
@@ -126,6 +140,26 @@ PetscErrorCode configureLineSearch(Run &run, SNES snes);
 /// Gives X (and the vectors TS and SNES duplicate from it) a view operation for VTK, HDF5,
 /// draw and GLVis viewers that inserts the prescribed values at run.stage_time first.
 PetscErrorCode attachSolutionView(const Run &run, Vec X);
+
+// stop_points.cpp: where a run looks for a stop from outside, and what it leaves then.
+
+/// Before the first step: the run.yaml a stop in that step leaves (stop_request.hpp).
+PetscErrorCode noteStart(Run &run);
+/// After an accepted step (its checkpoint written, `kept` if not the rolling one): notes it in
+/// run.yaml and arms the record a stop signal writes; rank 0 prints the step line.
+PetscErrorCode noteAcceptedStep(Run &run, const StepRow &row, bool kept);
+/// Test hook (-test_step_delay): a residual evaluation as slow as a large run's, without its
+/// cost (scripts/stop_trials: a stop in the middle of a long step).
+PetscErrorCode delayStepForTests(const Run &run);
+/// Collective, after an accepted step: a stop signal on any rank ends the time loop there.
+PetscErrorCode stopAfterStep(Run &run, TSConvergedReason reason);
+/// Collective, between two Newton iterations (the convergence test): a stop signal on any
+/// rank abandons the step in progress (its last accepted one is on disk already, or is
+/// written by describeEnding). Sets *reason to a divergence then (run.step_abandoned).
+PetscErrorCode stopDuringStep(Run &run, SNESConvergedReason *reason);
+/// After TSSolve: a step abandoned by a stop leaves X and the step size as after the last
+/// accepted step.
+PetscErrorCode restoreAbandonedStep(Run &run, Vec X);
 
 // run_ending.cpp: how the run ended.
 

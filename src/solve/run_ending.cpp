@@ -5,6 +5,7 @@
 #include "run.hpp"
 
 #include "checkpoint.hpp"
+#include "rolling_checkpoint.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -36,6 +37,8 @@ PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *me
       std::string path;
       PetscCall(writeCheckpoint(run, X, &path));
       run.checkpoint_step = run.step;
+      run.latest_checkpoint = path;
+      PetscCall(dropRollingCheckpoint(run)); // an older step's
     }
     checkpoint_note = "; a checkpoint of step " + std::to_string(run.step) + " is in " +
                       run.scene.output_dir + "/checkpoints";
@@ -61,9 +64,10 @@ PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *me
   } else if (run.stop_signal) {
     *ending = RunEnding::signal;
     std::snprintf(text, sizeof(text),
-                  "stopped at step %d, t = %g s of %g s, on signal %d (%s). Results up to t = %g "
-                  "s are in %s%s%s",
-                  run.step, t, t_end, run.stop_signal, strsignal(run.stop_signal), t,
+                  "stopped at step %d, t = %g s of %g s, on signal %d (%s)%s. Results up to "
+                  "t = %g s are in %s%s%s",
+                  run.step, t, t_end, run.stop_signal, strsignal(run.stop_signal),
+                  run.step_abandoned ? ", abandoning the step in progress" : "", t,
                   run.scene.output_dir.c_str(), checkpoint_note.c_str(), restart_hint.c_str());
   } else if (!reached) {
     std::snprintf(text, sizeof(text),

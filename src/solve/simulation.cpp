@@ -4,6 +4,7 @@
 
 #include "checkpoint.hpp"
 #include "restart_check.hpp"
+#include "rolling_checkpoint.hpp"
 
 #include "poroseam/field_writer.hpp"
 #include "poroseam/interface_writer.hpp"
@@ -70,6 +71,7 @@ PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f,
   }
   run.attempted_dt = dt;
   run.stage_time = t;
+  PetscCall(delayStepForTests(run));
   if (run.fail_dt_above > 0.0 && dt > run.fail_dt_above) {
     // Test hook standing in for a step too large to converge (see -test_fail_dt_above).
     SNES snes;
@@ -151,24 +153,6 @@ PetscErrorCode resetDirectSolver(TS ts)
   PetscFunctionReturn(0);
 }
 
-/// The wall time still needed to reach the final time, from the mean wall time per unit of
-/// simulated time so far (steps vary in cost; the mean over the run evens that out).
-std::string timeToFinish(const Run &run, double t)
-{
-  const double simulated = t - run.loop_start_time;
-  if (simulated <= 0.0) return "?";
-  const double left =
-      std::max(0.0, run.t_end - t) * (MPI_Wtime() - run.loop_start_wall) / simulated;
-  char text[32];
-  if (left < 120.0)
-    std::snprintf(text, sizeof(text), "%.0f s", left);
-  else if (left < 7200.0)
-    std::snprintf(text, sizeof(text), "%.0f min", left / 60.0);
-  else
-    std::snprintf(text, sizeof(text), "%.1f h", left / 3600.0);
-  return text;
-}
-
 PetscErrorCode postStep(TS ts)
 {
   void *ctx;
@@ -177,7 +161,8 @@ PetscErrorCode postStep(TS ts)
   Run &run = *static_cast<Run *>(ctx);
   TSConvergedReason reason;
   PetscCall(TSGetConvergedReason(ts, &reason));
-  if (reason < 0) PetscFunctionReturn(0); // TS calls this after a failed step too: record nothing
+  // TS calls this after a failed step too, and after one abandoned for a stop: record nothing
+  if (reason < 0 || run.step_abandoned) PetscFunctionReturn(0);
   ++run.step;
   double t, t_previous;
   PetscCall(TSGetTime(ts, &t));
@@ -218,27 +203,11 @@ PetscErrorCode postStep(TS ts)
   const PetscInt rejected = rejects - run.last_rejects;
   run.last_snes_its = snes_its, run.last_ksp_its = ksp_its, run.last_rejects = rejects;
   const double wall = MPI_Wtime() - run.step_start;
-  // The run's last step: it reached the final time or the step limit (TS has said so).
+  // The run's last step: it reached the final time or the step limit (TS has said so; a stop
+  // from outside is decided after this, in stopAfterStep, and keeps its state in the checkpoint).
   const bool last = reason != TS_CONVERGED_ITERATING;
   PetscCall(recordStep(run, t, dt, local, rate, newton, krylov, rejected, wall, last));
-  // A checkpoint after this step: every checkpoint_every steps, and when a signal asks the
-  // run to stop (unless this was the last step anyway).
-  int signal = 0;
-  PetscCall(run.stop.pending(PetscObjectComm((PetscObject)ts), &signal));
-  if (signal && reason == TS_CONVERGED_ITERATING) {
-    run.stop_signal = signal;
-    PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));
-  }
-  const bool checkpoint =
-      (run.checkpoint_every > 0 && run.step % run.checkpoint_every == 0) || run.stop_signal;
   if (rejected) ++run.steps_cut_back;
-  const std::string eta = timeToFinish(run, t);
-  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)ts),
-                        "step %4d  t %11.5e/%.5e s  dt %10.4e  load %6.4f  newton %2d  krylov %4d%s"
-                        "  %.2f s  eta %s%s\n",
-                        run.step, t, run.t_end, dt, run.problem.loadFactor(t), (int)newton,
-                        (int)krylov, rejected ? "  (cut back)" : "", wall, eta.c_str(),
-                        checkpoint ? "  checkpoint" : ""));
   PetscCall(run.problem.commit(local)); // only accepted steps reach here
   PetscCall(run.time.accept(t, run.previous, X));
   // Newton's extrapolated start of the next step: this step's increment of the unknowns.
@@ -258,18 +227,30 @@ PetscErrorCode postStep(TS ts)
     if (run.t_end - t > 0.0) next = std::min(next, run.t_end - t);
     PetscCall(TSSetTimeStep(ts, next));
   }
+  // A kept checkpoint every checkpoint_every steps; otherwise the rolling one of this step
+  // (rolling_checkpoint.hpp), so that a stop from outside finds this step on disk.
+  const bool checkpoint = run.checkpoint_every > 0 && run.step % run.checkpoint_every == 0;
+  PetscCall(beginLogEvent(run.events.output));
   if (checkpoint) {
     std::string path;
-    PetscCall(beginLogEvent(run.events.output));
     PetscCall(writeCheckpoint(run, X, &path));
-    PetscCall(endLogEvent(run.events.output));
     run.checkpoint_step = run.step;
+    run.latest_checkpoint = path;
+    PetscCall(dropRollingCheckpoint(run));
     // A run restarted here factors its first matrix from scratch, and the direct solver's
     // pivot order depends on that matrix's values (MUMPS's analysis); it would differ at
     // round-off from this run, which reuses its analysis of step 1. Redo ours at the next step
     // too, so that a restart continues this very computation.
     PetscCall(resetDirectSolver(ts));
+  } else {
+    PetscCall(updateRollingCheckpoint(run, X, wall));
   }
+  PetscCall(endLogEvent(run.events.output));
+  PetscCall(noteAcceptedStep(run,
+                             StepRow{run.step, t, dt, run.problem.loadFactor(t), (int)newton,
+                                     (int)krylov, (int)rejected, wall},
+                             checkpoint));
+  PetscCall(stopAfterStep(run, reason));
   run.step_start = MPI_Wtime();
   PetscFunctionReturn(0);
 }
@@ -335,6 +316,8 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(readMeshOptions(comm, run.scene));
   RestartOptions restart;
   PetscCall(readCheckpointOptions(comm, run, &restart));
+  PetscCall(readRollingCheckpointOptions(comm, &run.rolling));
+  run.record = &record;
   if (restart.restart) run.scene.output_dir = restart.dir; // the run continues where it was
   // -help: set up as far as every option is read (PETSc lists each with its value), write
   // nothing to the output directory, stop before the first step (option_listing.hpp).
@@ -435,6 +418,12 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(PetscOptionsReal("-test_fail_dt_above",
                              "test hook: step attempts with a dt above this [s] fail (0: off)",
                              "tests/solve", run.fail_dt_above, &run.fail_dt_above, nullptr));
+  PetscCall(PetscOptionsReal("-test_step_delay",
+                             "test hook: each residual evaluation of a step waits this long [s]",
+                             "scripts/stop_trials", run.step_delay, &run.step_delay, nullptr));
+  PetscCall(PetscOptionsInt("-test_step_delay_after", "test hook: ... in the steps after this one",
+                            "scripts/stop_trials", run.step_delay_after, &run.step_delay_after,
+                            nullptr));
   PetscOptionsEnd();
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
   PetscCall(SNESSetComputeInitialGuess(snes, chooseInitialGuess, &run));
@@ -469,6 +458,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
     PetscCall(TSSetTimeStep(run.ts, std::min(resumed.next_dt, run.nominal_dt)));
     run.step = resumed.step;
     run.checkpoint_step = resumed.step;
+    run.latest_checkpoint = checkpoint_path; // kept: not this run's rolling checkpoint
   }
   {
     PetscReal t0;
@@ -481,6 +471,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   // BDF2 and TSAdapt keep their memory (earlier states, the last error) inside PETSc, where a
   // checkpoint cannot reach it: a restart could not continue them exactly.
   const bool checkpoints = !run.time.bdf() && !run.time.adaptive();
+  run.rolling.enabled = run.rolling.enabled && checkpoints;
   PetscCheck(checkpoints || (!restart.restart && run.checkpoint_every == 0), comm,
              PETSC_ERR_USER_INPUT,
              "%s: checkpoints and restarts are supported with backward Euler at fixed steps (the "
@@ -560,12 +551,16 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(endLogPhase(run.events.layout));
   PetscCall(beginLogPhase(run.events.time_stepping));
   PetscCall(run.stop.install());
+  PetscCall(noteStart(run)); // a stop in the first step
   PetscCall(TSSolve(run.ts, X));
   PetscCall(endLogPhase(run.events.time_stepping));
-  PetscCall(run.stop.restore());
+  PetscCall(restoreAbandonedStep(run, X));
   std::string message; // empty: the run reached its final time
   RunEnding ending;
   PetscCall(describeEnding(run, X, checkpoints, &message, &ending));
+  if (ending == RunEnding::success) PetscCall(endRollingCheckpoint(run));
+  // From here the run writes its own record; a signal now only sets the flag.
+  StopRequest::disarmRecord();
   {
     RunSummary summary;
     PetscInt newton, krylov, rejected;
@@ -577,8 +572,10 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
     summary.last_step = run.step, summary.steps_cut_back = run.steps_cut_back;
     summary.newton = newton, summary.krylov = krylov, summary.rejected = rejected;
     summary.stepping_wall = MPI_Wtime() - run.loop_start_wall;
-    PetscCall(record.finish(comm, ending, message, summary));
+    PetscCall(record.finish(comm, ending, message, summary, run.stop_signal));
   }
+  PetscCall(reportRollingCheckpoints(run)); // printed after the record: stdout may block
+  PetscCall(run.stop.restore());
   if (message.empty())
     PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
                           MPI_Wtime() - run.loop_start_wall, run.scene.output_dir.c_str()));
@@ -604,7 +601,10 @@ PetscErrorCode runSimulation(MPI_Comm comm)
   const PetscErrorCode error = simulate(comm, run, record);
   // An error anywhere after the record's start still ends it (failed steps, step limits and
   // signals have ended it already, with their summary).
-  if (error) record.abandon(error);
+  if (error) {
+    StopRequest::disarmRecord(); // a signal from now on must not overwrite this ending
+    record.abandon(error);
+  }
   PetscCall(error);
   PetscFunctionReturn(0);
 }
