@@ -7,6 +7,7 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/simulation.hpp"
 
+#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -140,6 +141,14 @@ bool leaveLogPhases(bool input_error)
 }
 
 /// PetscHelpPrintf on ranks other than 0: prints nothing.
+/// PetscVFPrintf on ranks other than 0 during -help: prints nothing. PETSc prints some option
+/// help through it on PETSC_COMM_SELF (PetscFECreateLagrange's matrices list
+/// -mat_seqaij_type from every rank), which PetscHelpPrintf alone does not catch.
+PetscErrorCode silentVFPrintf(FILE *, const char[], va_list)
+{
+  return 0;
+}
+
 PetscErrorCode silentHelpPrintf(MPI_Comm, const char[], ...)
 {
   return 0;
@@ -151,6 +160,11 @@ int main(int argc, char **argv)
 {
   // MPI first, so that a bad -options_file is reported once, by rank 0, and every rank
   // finishes MPI cleanly (PETSc then leaves MPI_Finalize to us).
+  // Open MPI 4.1's shared-file-pointer component "lockedfile" overflows a fixed buffer (glibc
+  // aborts: "buffer overflow detected") when HDF5 opens a file whose path is longer than about
+  // 200 characters, e.g. fields.h5 under a deep -output_dir. HDF5 never uses shared file
+  // pointers; leave that component out unless the user chose the components themselves.
+  setenv("OMPI_MCA_sharedfp", "^lockedfile", 0);
   MPI_Init(&argc, &argv);
   std::vector<std::string> args; // PETSc keeps pointers into these until PetscFinalize
   const std::string options_error = readCommandLine(argc, argv, &args);
@@ -173,7 +187,10 @@ int main(int argc, char **argv)
   // Objects on PETSC_COMM_SELF (index sets of the field split, for one) print their options'
   // help from every rank; rank 1's lines then landed in the middle of rank 0's listing, which
   // Open MPI forwards in chunks, and cut some of its lines in two. Rank 0 speaks for all.
-  if (help_requested && worldRank() != 0) PetscHelpPrintf = silentHelpPrintf;
+  if (help_requested && worldRank() != 0) {
+    PetscHelpPrintf = silentHelpPrintf;
+    PetscVFPrintf = silentVFPrintf;
+  }
   // -help alone prints docs/scenes.md; with a scene, the run is set up (nothing written, no
   // step taken) and PETSc lists every option, poroseam's and its own, with its value.
   if (help_requested && !has_mesh) poroseam::printSceneHelp(PETSC_COMM_WORLD);

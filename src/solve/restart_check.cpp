@@ -30,8 +30,12 @@ const char *const kMayChange[] = {
     "output_dir", "output_fields_every", "partitioner_report", "ts_monitor", "ts_view",
     "ts_adapt_monitor", "dm_view",
     // The run's own controls: checkpoints, restart, guards against a run that does not end.
-    "checkpoint_every", "restart", "ts_max_steps", "ts_max_reject", "ts_max_snes_failures",
-    "ts_error_if_step_fails", "mesh_max_elements", "test_fail_dt_above",
+    "checkpoint_every", "checkpoint_rolling", "restart", "ts_max_steps", "ts_max_reject",
+    "ts_max_snes_failures", "ts_error_if_step_fails", "mesh_max_elements", "mesh_time_limit",
+    "mesh_memory_check", "io_agreement_timeout",
+    // The test suite's hooks (-test_*: forced failures, slow steps), which change how a run
+    // behaves, never what it computes.
+    "test_",
     // Profiling, debugging and PETSc's runtime.
     "log", "malloc", "options_", "help", "info", "version", "viewer", "draw", "on_error",
     "no_signal_handler", "history", "debugger", "start_in_debugger", "stop_for_debugger",
