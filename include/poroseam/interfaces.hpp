@@ -20,6 +20,10 @@ constexpr const char *kInterfaceNormalLabel = "interface normal";
 
 bool isCohesive(DMPolytopeType type);
 
+/// The bulk cell on the other side of `face` from the cohesive cell, or -1 when this rank does
+/// not hold it.
+PetscErrorCode bulkNeighbour(DM dm, PetscInt face, PetscInt *cell);
+
 /// Splits the serial mesh along all interfaces of the scene (no-op without interfaces) and
 /// sets the labels above. Interfaces that end inside the mesh are handled (buried tips).
 PetscErrorCode splitInterfaces(DM *dm, const Scene &scene);

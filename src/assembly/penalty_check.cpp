@@ -39,24 +39,6 @@ PetscErrorCode heightOver(DM dm, PetscInt cell, PetscInt face, int dim, double *
   PetscFunctionReturn(0);
 }
 
-/// The bulk cell on the far side of `face` from the cohesive cell, or -1 when this rank does
-/// not hold it.
-PetscErrorCode bulkCellOf(DM dm, PetscInt face, PetscInt *cell)
-{
-  const PetscInt *support;
-  PetscInt n;
-  PetscFunctionBeginUser;
-  *cell = -1;
-  PetscCall(DMPlexGetSupportSize(dm, face, &n));
-  PetscCall(DMPlexGetSupport(dm, face, &support));
-  for (PetscInt k = 0; k < n; ++k) {
-    DMPolytopeType t;
-    PetscCall(DMPlexGetCellType(dm, support[k], &t));
-    if (!isCohesive(t)) *cell = support[k];
-  }
-  PetscFunctionReturn(0);
-}
-
 void account(Extremes &x, double K, double h, double E_soft, double E_stiff)
 {
   if (K * h / E_soft < x.soft_ratio) x.soft_ratio = K * h / E_soft, x.soft_h = h, x.soft_E = E_soft;
@@ -141,7 +123,7 @@ PetscErrorCode warnAboutPenalties(DM dm, const Scene &scene)
     bool both = true;
     for (int side = 0; side < 2; ++side) {
       PetscInt cell, tag = -1;
-      PetscCall(bulkCellOf(dm, cone[side], &cell));
+      PetscCall(bulkNeighbour(dm, cone[side], &cell));
       if (cell < 0) {
         both = false;
         break;

@@ -43,22 +43,6 @@ void centroid(const std::vector<double> &x, int dim, double c[3])
       c[d] += x[a * dim + d] / nv;
 }
 
-/// Bulk cell on the other side of a face from the cohesive cell.
-PetscErrorCode bulkNeighbour(DM dm, PetscInt face, PetscInt *cell)
-{
-  const PetscInt *support;
-  PetscInt size;
-  PetscFunctionBeginUser;
-  *cell = -1;
-  PetscCall(DMPlexGetSupportSize(dm, face, &size));
-  PetscCall(DMPlexGetSupport(dm, face, &support));
-  for (PetscInt i = 0; i < size; ++i) {
-    DMPolytopeType t;
-    PetscCall(DMPlexGetCellType(dm, support[i], &t));
-    if (!isCohesive(t)) *cell = support[i];
-  }
-  PetscFunctionReturn(0);
-}
 
 /// Tips of interfaces that end inside the mesh: the rim of the interface (points of
 /// dimension dim - 2 that bound only one interface face: vertices in 2D, edges in 3D), where
@@ -205,6 +189,22 @@ PetscErrorCode checkInterfaceJunctions(DM dm, const Scene &scene, DMLabel faceSe
 }
 
 } // namespace
+
+PetscErrorCode bulkNeighbour(DM dm, PetscInt face, PetscInt *cell)
+{
+  const PetscInt *support;
+  PetscInt size;
+  PetscFunctionBeginUser;
+  *cell = -1;
+  PetscCall(DMPlexGetSupportSize(dm, face, &size));
+  PetscCall(DMPlexGetSupport(dm, face, &support));
+  for (PetscInt i = 0; i < size; ++i) {
+    DMPolytopeType t;
+    PetscCall(DMPlexGetCellType(dm, support[i], &t));
+    if (!isCohesive(t)) *cell = support[i];
+  }
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
 {
