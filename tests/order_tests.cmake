@@ -24,3 +24,5 @@ endforeach()
 # The geostatic initial state at order 2, 2D and 3D layered columns.
 poroseam_scene_test(verification.order_geostatic "order;verification;geostatic"
                     verification/order_geostatic.py)
+# fields.h5 at order 2: quadratic XDMF cells, nodes where VTK puts them, values at every node.
+set_tests_properties(unit.test_output_quadratic PROPERTIES LABELS "unit;order;outputs")

@@ -10,3 +10,7 @@ set_tests_properties(pictures.caisson_fig9a PROPERTIES SKIP_RETURN_CODE 77 TIMEO
 # fields.h5 (tests/pictures/plastic_zone.py); SKIPPED without pvpython.
 poroseam_scene_test(pictures.plastic_zone "pictures" pictures/plastic_zone.py)
 set_tests_properties(pictures.plastic_zone PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
+# ParaView draws the order-2 displacement as the quadratic field it is (quadratic XDMF cells of
+# fields.xmf against the Lagrange interpolation of fields.h5; tests/pictures/quadratic_fields.py).
+poroseam_scene_test(pictures.quadratic_fields "pictures;order;outputs" pictures/quadratic_fields.py)
+set_tests_properties(pictures.quadratic_fields PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)

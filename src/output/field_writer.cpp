@@ -3,7 +3,8 @@
 // HDF5 layout of <dir>/<basename>.h5 (vertices and cells in the order of their point numbers
 // in the serial mesh, serialPointNumbers: the same files on any number of ranks and any
 // partition; the same order in the geometry and in every field):
-//   /geometry/vertices              [Nv, cdim]  double   vertex coordinates
+//   /geometry/vertices              [Nv, cdim]  double   node coordinates (the vertices at
+//                                               displacement order 1; output_mesh.hpp)
 //   /topology/cells                 [Nc, nc]    PetscInt connectivity (0-based, XDMF order)
 //   /fields/displacement/<step>     [Nv, 3]     double   (padded with zeros when dim < 3)
 //   /fields/pressure/<step>         [Nv]        double   (only when the section has pressure;
@@ -17,7 +18,7 @@
 // renamed), so a crashed run still leaves a readable time series.
 #include "poroseam/field_writer.hpp"
 
-#include "output_order.hpp"
+#include "output_mesh.hpp"
 #include "xdmf.hpp"
 
 #include "poroseam/mesh.hpp"
@@ -34,48 +35,6 @@
 namespace poroseam {
 
 namespace {
-
-// XDMF name and vertex count of a bulk cell type; nullptr for types that are not written.
-const char *xdmfTopologyName(DMPolytopeType ct, PetscInt *corners)
-{
-  switch (ct) {
-  case DM_POLYTOPE_TRIANGLE:
-    *corners = 3;
-    return "Triangle";
-  case DM_POLYTOPE_QUADRILATERAL:
-    *corners = 4;
-    return "Quadrilateral";
-  case DM_POLYTOPE_TETRAHEDRON:
-    *corners = 4;
-    return "Tetrahedron";
-  case DM_POLYTOPE_HEXAHEDRON:
-    *corners = 8;
-    return "Hexahedron";
-  default:
-    *corners = 0;
-    return nullptr;
-  }
-}
-
-// Converts the vertices of a cell from DMPlex closure order to XDMF/VTK order (in place).
-// DMPlex reference cells (DMPlexCreateReferenceCell): triangle and quadrilateral are
-// counterclockwise (same as VTK); the tetrahedron (-1,-1,-1),(-1,1,-1),(1,-1,-1),(-1,-1,1) has
-// negative VTK orientation (swap 0 and 1); the hexahedron lists the bottom face clockwise seen
-// from above, (-1,-1,-1),(-1,1,-1),(1,1,-1),(1,-1,-1), then the top face counterclockwise
-// (-1,-1,1),(1,-1,1),(1,1,1),(-1,1,1) (swap 1 and 3). This is DMPlexInvertCell().
-void closureToXdmfOrder(DMPolytopeType ct, PetscInt *v)
-{
-  switch (ct) {
-  case DM_POLYTOPE_TETRAHEDRON:
-    std::swap(v[0], v[1]);
-    break;
-  case DM_POLYTOPE_HEXAHEDRON:
-    std::swap(v[1], v[3]);
-    break;
-  default:
-    break;
-  }
-}
 
 PetscErrorCode findField(PetscSection section, const char *name, PetscInt *field)
 {
@@ -111,18 +70,10 @@ struct FieldWriter::Impl {
   bool failed = false;          // a write failed (agreed by every rank): close without writing more
   xdmf::Rendezvous closing;     // for a close from the destructor
   PetscInt test_fail_rank = -2; // -test_io_fail_rank: this rank's writes fail (-1: every rank)
-  PetscInt dim = 0;             // topological dimension
-  PetscInt cdim = 0;            // coordinate dimension
-  DMPolytopeType cellType = DM_POLYTOPE_UNKNOWN;
-  PetscInt corners = 0;
-  PetscInt numCells = 0;    // global number of written cells
-  PetscInt numVertices = 0; // global number of written vertices
   PetscInt dispField = -1;
   PetscInt presField = -1;
   PetscInt dispComp = 0;
-  std::vector<PetscInt> ownedVertices; // local vertex points, in global output order
-  std::vector<PetscInt> ownedCells;    // local cell points, in global output order
-  OutputOrder vertexOrder, cellOrder;  // from this rank's order to the files' (output_order.hpp)
+  OutputMesh mesh; // nodes, coordinates, connectivity in the files' order
   std::vector<double> times;
   bool regions = false;             // /cell_fields/region written
   std::vector<CellField> cellNames; // name, units, components, integer of the cell fields
@@ -145,13 +96,13 @@ PetscErrorCode FieldWriter::Impl::writeVertexVec(const char *group, const std::s
                                                  const std::vector<PetscScalar> &values,
                                                  const char *units, double time, bool withTime)
 {
-  const PetscInt n = static_cast<PetscInt>(ownedVertices.size()) * bs;
+  const PetscInt n = static_cast<PetscInt>(mesh.ownedNodes.size()) * bs;
 
   PetscFunctionBeginUser;
   PetscCheck(static_cast<PetscInt>(values.size()) == n, comm, PETSC_ERR_PLIB,
              "FieldWriter: wrong number of values for %s", name.c_str());
   std::vector<PetscScalar> rows(values);
-  PetscCall(vertexOrder.permute(rows, bs));
+  PetscCall(mesh.nodeOrder.permute(rows, bs));
   PetscCall(
       xdmf::writeReals(viewer, comm, group, name, bs, rows, units, withTime ? &time : nullptr));
   PetscFunctionReturn(0);
@@ -167,11 +118,11 @@ PetscErrorCode FieldWriter::Impl::cellIndex(const std::vector<PetscInt> &cells,
   std::vector<size_t> position(pEnd - pStart, std::numeric_limits<size_t>::max());
   for (size_t i = 0; i < cells.size(); ++i)
     if (cells[i] >= pStart && cells[i] < pEnd) position[cells[i] - pStart] = i;
-  index.resize(ownedCells.size());
-  for (size_t k = 0; k < ownedCells.size(); ++k) {
-    index[k] = position[ownedCells[k] - pStart];
+  index.resize(mesh.ownedCells.size());
+  for (size_t k = 0; k < mesh.ownedCells.size(); ++k) {
+    index[k] = position[mesh.ownedCells[k] - pStart];
     PetscCheck(index[k] != std::numeric_limits<size_t>::max(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-               "FieldWriter: no cell value for cell %" PetscInt_FMT, ownedCells[k]);
+               "FieldWriter: no cell value for cell %" PetscInt_FMT, mesh.ownedCells[k]);
   }
   PetscFunctionReturn(0);
 }
@@ -184,10 +135,10 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
-    PetscInt dummy;
-    const char *topo = xdmfTopologyName(cellType, &dummy);
+    const char *topo = mesh.topology;
+    const PetscInt numCells = mesh.numCells, corners = mesh.nodesPerCell, cdim = mesh.cdim;
     const std::string intPrec = std::to_string(sizeof(PetscInt));
-    const std::string nv = std::to_string(numVertices);
+    const std::string nv = std::to_string(mesh.numNodes);
 
     auto topologyAndGeometry = [&](std::ostringstream &o) {
       o << "        <Topology TopologyType=\"" << topo << "\" NumberOfElements=\"" << numCells
@@ -290,7 +241,6 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   MPI_Comm comm;
   PetscMPIInt rank;
   PetscSection section;
-  PetscInt pStart, pEnd, vStart, vEnd, cStart, cEnd, cellHeight;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectGetComm((PetscObject)solution_dm, &comm));
@@ -320,10 +270,12 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
 
   PetscCall(PetscObjectReference((PetscObject)solution_dm));
   im.dm = solution_dm;
-  PetscCall(DMGetDimension(im.dm, &im.dim));
-  PetscCall(DMGetCoordinateDim(im.dm, &im.cdim));
-  PetscCheck(im.cdim == 2 || im.cdim == 3, comm, PETSC_ERR_SUP,
-             "FieldWriter: coordinate dimension %" PetscInt_FMT " not supported", im.cdim);
+  {
+    PetscInt cdim;
+    PetscCall(DMGetCoordinateDim(im.dm, &cdim));
+    PetscCheck(cdim == 2 || cdim == 3, comm, PETSC_ERR_SUP,
+               "FieldWriter: coordinate dimension %" PetscInt_FMT " not supported", cdim);
+  }
 
   // Fields of the local section.
   PetscCall(DMGetLocalSection(im.dm, &section));
@@ -347,134 +299,9 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
     }
   }
 
-  // Ownership of points from the point SF: a point is owned unless it is a leaf.
-  PetscCall(DMPlexGetChart(im.dm, &pStart, &pEnd));
-  PetscCheck(pStart == 0, comm, PETSC_ERR_SUP, "FieldWriter: chart must start at 0");
-  std::vector<char> owned(pEnd, 1);
-  PetscSF sf;
-  {
-    PetscInt nroots, nleaves;
-    const PetscInt *ilocal;
-    PetscCall(DMGetPointSF(im.dm, &sf));
-    PetscCall(PetscSFGetGraph(sf, &nroots, &nleaves, &ilocal, nullptr));
-    if (nroots >= 0)
-      for (PetscInt l = 0; l < nleaves; ++l)
-        owned[ilocal ? ilocal[l] : l] = 0;
-  }
-
-  // Global vertex numbers: the position of each vertex in the files, by its serial point number
-  // (owned vertices; ghosts get theirs via the SF).
-  PetscCall(DMPlexGetDepthStratum(im.dm, 0, &vStart, &vEnd));
-  std::vector<PetscInt> serial;
-  PetscCall(serialPointNumbers(im.dm, serial));
-  std::vector<PetscInt> gnum(pEnd, -1);
-  PetscInt nOwned = 0;
-  std::vector<PetscInt> keys;
-  for (PetscInt v = vStart; v < vEnd; ++v)
-    if (owned[v]) {
-      ++nOwned;
-      im.ownedVertices.push_back(v);
-      keys.push_back(serial[v]);
-    }
-  PetscCall(MPIU_Allreduce(&nOwned, &im.numVertices, 1, MPIU_INT, MPI_SUM, comm));
-  {
-    std::vector<PetscInt> position;
-    PetscCall(positionsByKey(comm, keys, std::vector<PetscInt>(keys.size(), 1), position));
-    for (size_t i = 0; i < im.ownedVertices.size(); ++i)
-      gnum[im.ownedVertices[i]] = position[i];
-    PetscCall(im.vertexOrder.setup(comm, position));
-  }
-  {
-    std::vector<PetscInt> leafNum(gnum);
-    PetscCall(PetscSFBcastBegin(sf, MPIU_INT, gnum.data(), leafNum.data(), MPI_REPLACE));
-    PetscCall(PetscSFBcastEnd(sf, MPIU_INT, gnum.data(), leafNum.data(), MPI_REPLACE));
-    gnum.swap(leafNum);
-  }
-
-  // Bulk cells owned by this rank; a single cell type over the whole mesh.
-  PetscCall(DMPlexGetVTKCellHeight(im.dm, &cellHeight));
-  PetscCall(DMPlexGetHeightStratum(im.dm, cellHeight, &cStart, &cEnd));
-  std::vector<PetscInt> cells;
-  PetscInt typeMin = PETSC_MAX_INT, typeMax = -1, nCellsLocal = 0;
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    DMPolytopeType ct;
-    PetscInt nc;
-    PetscCall(DMPlexGetCellType(im.dm, c, &ct));
-    if (!owned[c] || !xdmfTopologyName(ct, &nc)) continue;
-    typeMin = PetscMin(typeMin, (PetscInt)ct);
-    typeMax = PetscMax(typeMax, (PetscInt)ct);
-  }
-  {
-    PetscInt in[2] = {-typeMin, typeMax}, out[2];
-    PetscCall(MPIU_Allreduce(in, out, 2, MPIU_INT, MPI_MAX, comm));
-    typeMin = -out[0];
-    typeMax = out[1];
-  }
-  PetscCheck(typeMax >= 0, comm, PETSC_ERR_ARG_WRONG,
-             "FieldWriter: the mesh has no bulk cells (triangle, quadrilateral, tetrahedron, "
-             "hexahedron)");
-  PetscCheck(typeMin == typeMax, comm, PETSC_ERR_SUP,
-             "FieldWriter: mixed bulk cell types (%s and %s) are not supported; one bulk cell "
-             "type per mesh",
-             DMPolytopeTypes[typeMin], DMPolytopeTypes[typeMax]);
-  im.cellType = (DMPolytopeType)typeMax;
-  (void)xdmfTopologyName(im.cellType, &im.corners);
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    DMPolytopeType ct;
-    PetscInt *closure = nullptr, closureSize, nv = 0;
-    PetscCall(DMPlexGetCellType(im.dm, c, &ct));
-    if (!owned[c] || ct != im.cellType) continue;
-    PetscCall(DMPlexGetTransitiveClosure(im.dm, c, PETSC_TRUE, &closureSize, &closure));
-    PetscInt verts[8];
-    for (PetscInt p = 0; p < 2 * closureSize; p += 2) {
-      const PetscInt q = closure[p];
-      if (q >= vStart && q < vEnd && nv < 8) verts[nv++] = q;
-    }
-    PetscCall(DMPlexRestoreTransitiveClosure(im.dm, c, PETSC_TRUE, &closureSize, &closure));
-    PetscCheck(nv == im.corners, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-               "FieldWriter: cell %" PetscInt_FMT " has %" PetscInt_FMT
-               " vertices in its closure, expected %" PetscInt_FMT,
-               c, nv, im.corners);
-    closureToXdmfOrder(im.cellType, verts);
-    for (PetscInt i = 0; i < nv; ++i) {
-      PetscCheck(gnum[verts[i]] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                 "FieldWriter: vertex %" PetscInt_FMT " has no global number", verts[i]);
-      cells.push_back(gnum[verts[i]]);
-    }
-    im.ownedCells.push_back(c);
-    ++nCellsLocal;
-  }
-  PetscCall(MPIU_Allreduce(&nCellsLocal, &im.numCells, 1, MPIU_INT, MPI_SUM, comm));
-  {
-    std::vector<PetscInt> cellKeys, position;
-    for (PetscInt c : im.ownedCells)
-      cellKeys.push_back(serial[c]);
-    PetscCall(positionsByKey(comm, cellKeys, std::vector<PetscInt>(cellKeys.size(), 1), position));
-    PetscCall(im.cellOrder.setup(comm, position));
-  }
-  PetscCall(im.cellOrder.permute(cells, im.corners));
-
-  // Coordinates of the owned vertices.
-  std::vector<PetscScalar> xyz(im.ownedVertices.size() * im.cdim, 0.0);
-  {
-    Vec coords;
-    PetscSection csec;
-    const PetscScalar *ca;
-    PetscCall(DMGetCoordinatesLocal(im.dm, &coords));
-    PetscCall(DMGetCoordinateSection(im.dm, &csec));
-    PetscCall(VecGetArrayRead(coords, &ca));
-    for (size_t i = 0; i < im.ownedVertices.size(); ++i) {
-      PetscInt dof, off;
-      PetscCall(PetscSectionGetDof(csec, im.ownedVertices[i], &dof));
-      PetscCall(PetscSectionGetOffset(csec, im.ownedVertices[i], &off));
-      PetscCheck(dof == im.cdim, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                 "FieldWriter: vertex %" PetscInt_FMT " has %" PetscInt_FMT " coordinates",
-                 im.ownedVertices[i], dof);
-      for (PetscInt d = 0; d < im.cdim; ++d)
-        xyz[i * im.cdim + d] = ca[off + d];
-    }
-    PetscCall(VecRestoreArrayRead(coords, &ca));
-  }
+  PetscCall(im.mesh.build(im.dm, im.dispField));
+  const std::vector<PetscScalar> &xyz = im.mesh.coordinates;
+  const std::vector<PetscInt> &cells = im.mesh.connectivity;
 
   // HDF5 file with geometry and topology.
   // A restarted run appends: PETSc's HDF5 viewer overwrites datasets that exist (the same
@@ -485,8 +312,9 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
     PetscFunctionBeginUser;
     PetscCall(PetscViewerHDF5Open(comm, im.h5Path.c_str(),
                                   resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
-    PetscCall(im.writeVertexVec("/geometry", "vertices", im.cdim, xyz, "m", 0.0, false));
-    PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.corners, cells, "1"));
+    PetscCall(im.writeVertexVec("/geometry", "vertices", im.mesh.cdim, xyz, "m", 0.0, false));
+    PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.mesh.nodesPerCell,
+                               cells, "1"));
     PetscCall(PetscViewerFlush(im.viewer));
     PetscFunctionReturn(0);
   }));
@@ -504,7 +332,7 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
   PetscSection section;
   PetscInt storage, n;
   const PetscScalar *sol, *init = nullptr;
-  const size_t nv = im.ownedVertices.size();
+  const size_t nv = im.mesh.ownedNodes.size();
 
   PetscCall(DMGetLocalSection(im.dm, &section));
   PetscCall(PetscSectionGetStorageSize(section, &storage));
@@ -529,22 +357,31 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
   PetscCall(VecGetArrayRead(local_solution, &sol));
   if (local_initial) PetscCall(VecGetArrayRead(local_initial, &init));
   for (size_t i = 0; i < nv; ++i) {
-    const PetscInt v = im.ownedVertices[i];
+    const PetscInt node = im.mesh.ownedNodes[i];
     PetscInt dof, off;
-    PetscCall(PetscSectionGetFieldDof(section, v, im.dispField, &dof));
+    PetscCall(PetscSectionGetFieldDof(section, node, im.dispField, &dof));
     if (dof > 0) {
-      PetscCall(PetscSectionGetFieldOffset(section, v, im.dispField, &off));
+      PetscCall(PetscSectionGetFieldOffset(section, node, im.dispField, &off));
       for (PetscInt d = 0; d < PetscMin(dof, (PetscInt)3); ++d)
         disp[3 * i + d] = sol[off + d];
     }
-    if (im.presField >= 0) {
+    if (im.presField < 0) continue;
+    // The pressure is linear at both orders: at a node that is not a vertex (order 2) it is
+    // the mean over the node's corners, which is its value there; NaN when a corner has none.
+    double p = 0.0, dp = 0.0;
+    const double share = 1.0 / (double)im.mesh.nodeVertices[i].size();
+    for (PetscInt v : im.mesh.nodeVertices[i]) {
       PetscCall(PetscSectionGetFieldDof(section, v, im.presField, &dof));
-      if (dof > 0) {
-        PetscCall(PetscSectionGetFieldOffset(section, v, im.presField, &off));
-        pres[i] = sol[off];
-        excess[i] = init ? sol[off] - init[off] : sol[off];
+      if (dof == 0) {
+        p = dp = std::numeric_limits<double>::quiet_NaN();
+        break;
       }
+      PetscCall(PetscSectionGetFieldOffset(section, v, im.presField, &off));
+      p += share * sol[off];
+      dp += share * (init ? sol[off] - init[off] : sol[off]);
     }
+    pres[i] = p;
+    excess[i] = dp;
   }
   PetscCall(VecRestoreArrayRead(local_solution, &sol));
   if (local_initial) PetscCall(VecRestoreArrayRead(local_initial, &init));
@@ -603,7 +440,7 @@ PetscErrorCode FieldWriter::Impl::writeStep(double time, const std::vector<Petsc
         for (size_t k : index)
           for (size_t j = 0; j < nc; ++j)
             v.push_back(static_cast<PetscInt>(f.values[k * nc + j]));
-        PetscCall(im.cellOrder.permute(v, f.components));
+        PetscCall(im.mesh.cellOrder.permute(v, f.components));
         PetscCall(xdmf::writeInts(im.viewer, im.comm, group, step, f.components, v, f.units.c_str(),
                                   &time));
       } else {
@@ -612,7 +449,7 @@ PetscErrorCode FieldWriter::Impl::writeStep(double time, const std::vector<Petsc
         for (size_t k : index)
           for (size_t j = 0; j < nc; ++j)
             v.push_back(f.values[k * nc + j]);
-        PetscCall(im.cellOrder.permute(v, f.components));
+        PetscCall(im.mesh.cellOrder.permute(v, f.components));
         PetscCall(xdmf::writeReals(im.viewer, im.comm, group, step, f.components, v,
                                    f.units.c_str(), &time));
       }
@@ -653,7 +490,7 @@ PetscErrorCode FieldWriter::writeRegions(const std::vector<PetscInt> &cells,
   ids.reserve(index.size());
   for (size_t k : index)
     ids.push_back(region[k]);
-  PetscCall(im.cellOrder.permute(ids, 1));
+  PetscCall(im.mesh.cellOrder.permute(ids, 1));
   std::string list;
   for (size_t r = 0; r < names.size(); ++r)
     list += (r ? "," : "") + names[r];
@@ -680,8 +517,7 @@ PetscErrorCode FieldWriter::close()
   if (im.failed) { // the index names what the file holds; the error is on its way up
     PetscCall(PetscViewerDestroy(&im.viewer));
     PetscCall(DMDestroy(&im.dm));
-    PetscCall(im.vertexOrder.destroy());
-    PetscCall(im.cellOrder.destroy());
+    PetscCall(im.mesh.destroy());
     PetscFunctionReturn(0);
   }
   PetscCall(xdmf::agreed(im.comm, im.h5Path, &im.failed, [&]() -> PetscErrorCode {
@@ -691,8 +527,7 @@ PetscErrorCode FieldWriter::close()
   }));
   PetscCall(im.writeXdmf());
   PetscCall(DMDestroy(&im.dm));
-  PetscCall(im.vertexOrder.destroy());
-  PetscCall(im.cellOrder.destroy());
+  PetscCall(im.mesh.destroy());
   PetscFunctionReturn(0);
 }
 

@@ -26,7 +26,11 @@ import xml.etree.ElementTree as ET
 import h5py
 import numpy as np
 
-NODES_PER_CELL = {"Triangle": 3, "Quadrilateral": 4, "Tetrahedron": 4, "Hexahedron": 8}
+# Linear cells, and the quadratic cells of displacement order 2 (corners first, VTK order).
+NODES_PER_CELL = {"Triangle": 3, "Quadrilateral": 4, "Tetrahedron": 4, "Hexahedron": 8,
+                  "Triangle_6": 6, "Quadrilateral_9": 9, "Tetrahedron_10": 10, "Hexahedron_27": 27}
+CORNERS = {t: {"Triangle_6": 3, "Quadrilateral_9": 4, "Tetrahedron_10": 4,
+                 "Hexahedron_27": 8}.get(t, n) for t, n in NODES_PER_CELL.items()}
 GEOMETRY_DIM = {"XY": 2, "XYZ": 3}
 
 
@@ -44,6 +48,15 @@ class Fields:
         self.cell_fields = []
         self.region_names = []
         self.units = {}
+
+    def vertices(self):
+        """Boolean mask of the nodes that are cell corners (mesh vertices). At displacement
+        order 2 the other nodes are edge, face and cell nodes of the quadratic displacement;
+        the pressure there is interpolated from the corners, not an unknown."""
+        mask = np.zeros(len(self.coordinates), dtype=bool)
+        if self.connectivity is not None and len(self.connectivity):
+            mask[self.connectivity[:, :CORNERS[self.topology_type]].ravel()] = True
+        return mask
 
     def __repr__(self):
         return "Fields(%d times, %d vertices, %d %s cells, fields %s)" % (
