@@ -18,3 +18,7 @@ foreach(case drained interface_flow)
   poroseam_scene_test(outputs.plots_${case} "outputs" outputs/plots.py --case ${case})
   set_tests_properties(outputs.plots_${case} PROPERTIES PROCESSORS 2)
 endforeach()
+# Recovered (continuous) stresses at the nodes against a column under its own weight, orders 1
+# and 2, 1 and 2 ranks (tests/outputs/recovered_stress.py). A few seconds.
+poroseam_scene_test(outputs.recovered_stress "outputs;order" outputs/recovered_stress.py)
+set_tests_properties(outputs.recovered_stress PROPERTIES PROCESSORS 2)

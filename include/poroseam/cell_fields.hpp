@@ -17,10 +17,13 @@ struct CellField {
   std::vector<double> values; ///< `components` values per cell, cells in CellFields order
 };
 
-/// Per-cell quantities of one output time (Problem::cellFields), or the region of each cell.
+/// Per-cell quantities of one output time (Problem::cellFields), or the region of each cell;
+/// and quantities recovered at the vertices (continuous stresses, stress_recovery.hpp).
 struct CellFields {
   std::vector<PetscInt> cells; ///< local DMPlex cell points
   std::vector<CellField> fields;
+  std::vector<PetscInt> vertices;       ///< local DMPlex vertex points (ghosts included)
+  std::vector<CellField> vertex_fields; ///< `components` values per vertex of `vertices`
 };
 
 } // namespace poroseam

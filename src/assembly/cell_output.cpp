@@ -7,6 +7,10 @@
 
 #include "cell_stress.hpp"
 
+#include "poroseam/stress_recovery.hpp"
+
+#include <petscdmplex.h>
+
 #include <algorithm>
 
 namespace poroseam {
@@ -48,6 +52,13 @@ PetscErrorCode Problem::cellFields(Vec local, CellFields &out) const
     f->components = 9;
     f->values.reserve(9 * cells_.size());
   }
+  // Continuous effective and total stresses at the vertices (patch recovery from the
+  // integration points): what a boundary's or a fault's stress is read from.
+  PatchRecovery recovery(dim_, 18);
+  PetscCall(recovery.reset(dm_));
+  std::vector<PetscInt> cellVertices;
+  PetscInt vStart, vEnd;
+  PetscCall(DMPlexGetDepthStratum(dm_, 0, &vStart, &vEnd));
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
   PetscCall(VecGetArrayRead(local, &ua));
   PetscCall(VecGetArrayRead(coords, &ca));
@@ -62,6 +73,14 @@ PetscErrorCode Problem::cellFields(Vec local, CellFields &out) const
     gatherClosure(ca, closures_.coordinates(i), nc, xc.data());
     double eqps = 0.0; // plastic state (cells whose law has history)
     int state = 0;
+    {
+      PetscInt *closure = nullptr, size;
+      cellVertices.clear();
+      PetscCall(DMPlexGetTransitiveClosure(dm_, cell.cell, PETSC_TRUE, &size, &closure));
+      for (PetscInt k = 0; k < 2 * size; k += 2)
+        if (closure[k] >= vStart && closure[k] < vEnd) cellVertices.push_back(closure[k]);
+      PetscCall(DMPlexRestoreTransitiveClosure(dm_, cell.cell, PETSC_TRUE, &size, &closure));
+    }
     const CellStressState s = cellStressAverage(
         elements_[cell.element], dim_, scene_->axisymmetric, m, scene_->hasPressure() && m.porous,
         xc.data(), x.data(),
@@ -80,7 +99,19 @@ PetscErrorCode Problem::cellFields(Vec local, CellFields &out) const
           eqps += r.updated.equivalent_plastic_strain / elements_[cell.element].num_quadrature;
           state = std::max(state, (int)r.state);
         },
-        [&](const double *xq) { return initialPressure(xq); });
+        [&](const double *xq) { return initialPressure(xq); },
+        [&](int, const double *xq, double, const double[3][3], const double effective_q[3][3],
+            const double total_q[3][3]) {
+          double values[18];
+          for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) {
+              values[3 * a + b] = effective_q[a][b];
+              values[9 + 3 * a + b] = total_q[a][b];
+            }
+          // The vertices of the closure are the element's vertices, in its order.
+          for (size_t k = 0; k < cellVertices.size(); ++k)
+            recovery.add(cellVertices[k], &xc[k * dim_], xq, cell.size, values);
+        });
     out.cells.push_back(cell.cell);
     if (plastic) {
       out.fields[3].values.push_back(eqps);
@@ -95,6 +126,24 @@ PetscErrorCode Problem::cellFields(Vec local, CellFields &out) const
   }
   PetscCall(VecRestoreArrayRead(coords, &ca));
   PetscCall(VecRestoreArrayRead(local, &ua));
+
+  std::vector<double> atVertices;
+  PetscCall(recovery.finish(dm_, atVertices));
+  out.vertices.clear();
+  for (PetscInt v = vStart; v < vEnd; ++v)
+    out.vertices.push_back(v);
+  out.vertex_fields.assign(2, CellField{});
+  out.vertex_fields[0].name = "recovered_effective_stress";
+  out.vertex_fields[1].name = "recovered_total_stress";
+  for (int f = 0; f < 2; ++f) {
+    CellField &field = out.vertex_fields[f];
+    field.units = "Pa";
+    field.components = 9;
+    field.values.resize(9 * out.vertices.size());
+    for (size_t v = 0; v < out.vertices.size(); ++v)
+      for (int c = 0; c < 9; ++c)
+        field.values[9 * v + c] = atVertices[18 * v + 9 * f + c];
+  }
   PetscFunctionReturn(0);
 }
 

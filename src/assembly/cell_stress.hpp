@@ -27,24 +27,22 @@ inline void skeletonStress(const CellMaterial &m, const double strain[3][3],
       stress[i][j] += initial[i][j];
 }
 
-/// Averages over the integration points of one cell, each weighted by its measure in the
-/// mesh's own space (area in 2D, axisymmetric too; volume in 3D), so that a field linear over
-/// an affine cell averages to its value at the centroid.
+/// The stresses at every integration point of one cell: visit(q, xq, weight, strain,
+/// effective, total) for each point q at position xq with weight `weight` (its measure in the
+/// mesh's own space: area in 2D, axisymmetric too; volume in 3D).
 ///   e, dim, axisymmetric: as CellKernel; m: the cell's material; with_pressure: the closure
 ///   holds the nv pressures after the nn * dim displacements (CellKernel::with_pressure)
 ///   coords: vertex coordinates (nv x dim); x: the closure values (nn: the element's nodes)
 ///   point_stress(q, xq, strain, stress): the effective stress at point q (position xq)
 ///   pressure0(xq): the pore pressure of a porous cell without pressure unknowns (drained)
-template <class PointStress, class InitialPressure>
-CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisymmetric,
-                                  const CellMaterial &m, bool with_pressure, const double *coords,
-                                  const double *x, PointStress &&point_stress,
-                                  InitialPressure &&pressure0)
+template <class PointStress, class InitialPressure, class Visit>
+void forEachStressPoint(const ReferenceElement &e, int dim, bool axisymmetric,
+                        const CellMaterial &m, bool with_pressure, const double *coords,
+                        const double *x, PointStress &&point_stress, InitialPressure &&pressure0,
+                        Visit &&visit)
 {
-  CellStressState out{};
   const int nv = e.num_vertices, nn = e.num_nodes, nu = nn * dim;
   const double alpha = m.porous ? m.biot.biot_coefficient : 0.0;
-  double measure = 0.0;
   PointGeometry g;
   for (int q = 0; q < e.num_quadrature; ++q) {
     mapQuadraturePoint(e, coords, q, g);
@@ -61,7 +59,7 @@ CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisy
     if (axisymmetric)
       for (int a = 0; a < nn; ++a)
         eps[2][2] += x[a * dim] * N[a] / g.x[0];
-    double stress[3][3];
+    double stress[3][3], total[3][3];
     point_stress(q, g.x, eps, stress);
     double p = 0.0;
     if (with_pressure)
@@ -70,13 +68,35 @@ CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisy
     else if (m.porous)
       p = pressure0(g.x);
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        out.effective_stress[i][j] += g.weight * stress[i][j];
-        out.total_stress[i][j] += g.weight * (stress[i][j] - (i == j ? alpha * p : 0.0));
-        out.strain[i][j] += g.weight * eps[i][j];
-      }
-    measure += g.weight;
+      for (int j = 0; j < 3; ++j)
+        total[i][j] = stress[i][j] - (i == j ? alpha * p : 0.0);
+    visit(q, g.x, g.weight, eps, stress, total);
   }
+}
+
+/// Averages over the integration points of one cell, each weighted by its measure, so that a
+/// field linear over an affine cell averages to its value at the centroid. Arguments as
+/// forEachStressPoint; visit(q, xq, weight, strain, effective, total) sees each point as well.
+template <class PointStress, class InitialPressure, class Visit>
+CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisymmetric,
+                                  const CellMaterial &m, bool with_pressure, const double *coords,
+                                  const double *x, PointStress &&point_stress,
+                                  InitialPressure &&pressure0, Visit &&visit)
+{
+  CellStressState out{};
+  double measure = 0.0;
+  forEachStressPoint(e, dim, axisymmetric, m, with_pressure, coords, x, point_stress, pressure0,
+                     [&](int q, const double *xq, double w, const double eps[3][3],
+                         const double stress[3][3], const double total[3][3]) {
+                       for (int i = 0; i < 3; ++i)
+                         for (int j = 0; j < 3; ++j) {
+                           out.effective_stress[i][j] += w * stress[i][j];
+                           out.total_stress[i][j] += w * total[i][j];
+                           out.strain[i][j] += w * eps[i][j];
+                         }
+                       measure += w;
+                       visit(q, xq, w, eps, stress, total);
+                     });
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       out.effective_stress[i][j] /= measure;
@@ -84,6 +104,18 @@ CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisy
       out.strain[i][j] /= measure;
     }
   return out;
+}
+
+template <class PointStress, class InitialPressure>
+CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisymmetric,
+                                  const CellMaterial &m, bool with_pressure, const double *coords,
+                                  const double *x, PointStress &&point_stress,
+                                  InitialPressure &&pressure0)
+{
+  return cellStressAverage(e, dim, axisymmetric, m, with_pressure, coords, x, point_stress,
+                           pressure0,
+                           [](int, const double *, double, const double[3][3],
+                              const double[3][3], const double[3][3]) {});
 }
 
 } // namespace poroseam

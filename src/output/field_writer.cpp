@@ -11,6 +11,10 @@
 //                                                        NaN at vertices without pressure)
 //   /fields/excess_pressure/<step>  [Nv]        double   (pressure - initial pressure)
 //   /cell_fields/region             [Nc, 1]     PetscInt region index; attribute "names"
+//   /fields/recovered_effective_stress/<step>, /fields/recovered_total_stress/<step>
+//                                   [Nv, 9]     double   stresses recovered at the nodes from
+//                                                        the integration points (CellFields::
+//                                                        vertex_fields, stress_recovery.hpp)
 //   /cell_fields/<name>/<step>      [Nc, 9] or [Nc] double ([Nc, 1] PetscInt when integer):
 //                                   the CellFields given to write()
 // Every dataset carries a string attribute "units"; every field dataset an attribute "time".
@@ -77,6 +81,7 @@ struct FieldWriter::Impl {
   std::vector<double> times;
   bool regions = false;             // /cell_fields/region written
   std::vector<CellField> cellNames; // name, units, components, integer of the cell fields
+  std::vector<CellField> nodeNames; // the same of the vertex fields (CellFields::vertex_fields)
 
   /// index[k]: position in `cells` of ownedCells[k]; an error if some cell is missing.
   PetscErrorCode cellIndex(const std::vector<PetscInt> &cells, std::vector<size_t> &index) const;
@@ -162,6 +167,14 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
         << "        </Attribute>\n";
     };
 
+    auto nodeTensor = [&](std::ostringstream &o, const CellField &f, size_t step) {
+      o << "        <Attribute Name=\"" << f.name << "\" AttributeType=\""
+        << (f.components == 9 ? "Tensor" : "Scalar") << "\" Center=\"Node\">\n"
+        << "          <DataItem Dimensions=\"" << nv << " " << f.components
+        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5name << ":/fields/"
+        << f.name << "/" << step << "</DataItem>\n"
+        << "        </Attribute>\n";
+    };
     const std::string nc = std::to_string(numCells);
     auto cellAttribute = [&](std::ostringstream &o, const CellField &f, const std::string &path) {
       const char *type = f.components == 9 ? "Tensor" : "Scalar";
@@ -199,6 +212,8 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
         region.integer = true;
         cellAttribute(x, region, "/cell_fields/region");
       }
+      for (const CellField &f : nodeNames)
+        nodeTensor(x, f, s);
       for (const CellField &f : cellNames)
         cellAttribute(x, f, "/cell_fields/" + f.name + "/" + std::to_string(s));
       x << "      </Grid>\n";
@@ -388,9 +403,12 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
 
   PetscCheck(!im.failed, im.comm, PETSC_ERR_ARG_WRONGSTATE, "FieldWriter::write after a failure");
   double bytes = 8.0 * (disp.size() + pres.size() + excess.size());
-  if (cells)
+  if (cells) {
     for (const CellField &f : cells->fields)
       bytes += 8.0 * f.values.size();
+    for (const CellField &f : cells->vertex_fields)
+      bytes += 8.0 * f.components * im.mesh.ownedNodes.size();
+  }
   {
     char what[64];
     std::snprintf(what, sizeof what, "the fields at t = %g s", time);
@@ -423,6 +441,39 @@ PetscErrorCode FieldWriter::Impl::writeStep(double time, const std::vector<Petsc
   if (im.presField >= 0) {
     PetscCall(im.writeVertexVec("/fields/pressure", step, 1, pres, "Pa", time, true));
     PetscCall(im.writeVertexVec("/fields/excess_pressure", step, 1, excess, "Pa", time, true));
+  }
+  if (cells && !cells->vertex_fields.empty()) {
+    // At each node the mean over its corners (the vertex itself at a vertex): the recovered
+    // fields are linear between vertices, at both displacement orders.
+    PetscInt pStart, pEnd;
+    PetscCall(DMPlexGetChart(im.dm, &pStart, &pEnd));
+    std::vector<PetscInt> position(pEnd - pStart, -1);
+    for (size_t k = 0; k < cells->vertices.size(); ++k)
+      position[cells->vertices[k] - pStart] = (PetscInt)k;
+    std::vector<CellField> names;
+    for (const CellField &f : cells->vertex_fields) {
+      const size_t nc = f.components;
+      PetscCheck(f.values.size() == cells->vertices.size() * nc, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "FieldWriter: vertex field %s has %zu values for %zu vertices", f.name.c_str(),
+                 f.values.size(), cells->vertices.size());
+      std::vector<PetscScalar> v(im.mesh.ownedNodes.size() * nc, 0.0);
+      for (size_t i = 0; i < im.mesh.ownedNodes.size(); ++i) {
+        const std::vector<PetscInt> &corners = im.mesh.nodeVertices[i];
+        for (PetscInt q : corners) {
+          const PetscInt k = position[q - pStart];
+          PetscCheck(k >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                     "FieldWriter: no value of %s at vertex %" PetscInt_FMT, f.name.c_str(), q);
+          for (size_t c = 0; c < nc; ++c)
+            v[i * nc + c] += f.values[k * nc + c] / (double)corners.size();
+        }
+      }
+      PetscCall(im.writeVertexVec(("/fields/" + f.name).c_str(), step, f.components, v,
+                                  f.units.c_str(), time, true));
+      CellField name = f;
+      name.values.clear();
+      names.push_back(name);
+    }
+    im.nodeNames = names;
   }
   if (cells) {
     std::vector<size_t> index;
@@ -467,6 +518,12 @@ void FieldWriter::declareCellFields(const CellFields &cells)
 {
   if (!impl_) return;
   impl_->cellNames.clear();
+  impl_->nodeNames.clear();
+  for (const CellField &f : cells.vertex_fields) {
+    CellField name = f;
+    name.values.clear();
+    impl_->nodeNames.push_back(name);
+  }
   for (const CellField &f : cells.fields) {
     CellField name = f;
     name.values.clear();

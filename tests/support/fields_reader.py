@@ -218,9 +218,11 @@ def read_fields(output_dir, basename="fields"):
                     continue
                 if a.get("Center", "Node") != "Node":
                     raise FieldsError("%s: Center is neither Node nor Cell" % actx)
-                expected = (nv, 3) if atype == "Vector" else (nv,)
-                if atype not in ("Vector", "Scalar") or values.shape != expected:
+                expected = {"Vector": (nv, 3), "Scalar": (nv,), "Tensor": (nv, 9)}.get(atype)
+                if values.shape != expected:
                     raise FieldsError("%s: %s of shape %s" % (actx, atype, values.shape))
+                if atype == "Tensor":
+                    values = values.reshape(nv, 3, 3)
                 if name in fields:
                     raise FieldsError("%s: duplicate attribute" % actx)
                 fields[name] = values
