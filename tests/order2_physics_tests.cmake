@@ -7,3 +7,18 @@
 # nodes: rate 3 of u_r, the ring force on r = a exact (about 10 s).
 poroseam_scene_test(verification.order_thick_cylinder "order;verification;axisymmetric"
                     verification/axisymmetric.py --order 2)
+# The plastic scene (tests/plasticity/footing_block.opts: a block on a porous Mohr-Coulomb layer,
+# geostatic state, probes) at order 2: a run stopped at step 12 and restarted from its checkpoint
+# (the history of 6 or 9 points per cell) equals the uninterrupted run.
+poroseam_scene_test(plasticity.restart_order2 "plasticity;restart;order"
+                    plasticity/scene.py --case restart --order 2)
+# Strip footing on weightless soil with P2 triangles on an ordinary mesh (one diagonal per grid
+# cell, where P1 triangles lock: +21 % Tresca), 40 cells under the half footing growing by 1.25
+# away from it: the plateau within 1 % of Prandtl's (pi + 2) c and N_c c (phi = psi = 20 deg);
+# measured +0.73 % and +0.86 % (docs/verification.md, "Order 2: collapse loads"). About 12 s each.
+poroseam_scene_test(plasticity.strip_footing_tresca_order2 "plasticity;verification;order"
+                    plasticity/footing.py --case tresca --triangles --order 2 --cells 40
+                    --growth 1.25 --tolerance 0.01)
+poroseam_scene_test(plasticity.strip_footing_frictional_order2 "plasticity;verification;order"
+                    plasticity/footing.py --case frictional --triangles --order 2 --cells 40
+                    --growth 1.25 --tolerance 0.01)
