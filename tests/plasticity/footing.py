@@ -10,9 +10,10 @@ Circular footing (axisymmetric, x = r, the axis at x = 0; the same mesh, the foo
 radius b; q = -footing.Fy / (pi b^2), footing.Fy being the whole ring's force) on a Tresca soil:
     --case circular_smooth   N_c = 5.69  (Shield 1955, smooth rigid punch)
     --case circular_rough    N_c = 6.05  (Eason and Shield 1960, rough: -bc_footing_ux 0)
-Linear triangles lock here whatever the mesh (the hoop strain adds incompressibility
-constraints; Sloan and Randolph 1982): the case linear elements cannot converge. Mesh: meshes/strip_footing_2d.geo,
-crossed triangles (42 x 24 cells, 4032 triangles at factor 1, 14 cells under the footing); --quads meshes the same grid
+Linear triangles lock here (the hoop strain adds incompressibility constraints; Sloan and
+Randolph 1982): measured +23 % with 56 cells under the footing and still rising, where P2
+triangles are at +1.2 % (docs/verification.md).
+Mesh: meshes/strip_footing_2d.geo, crossed triangles (42 x 24 cells, 4032 triangles at factor 1, 14 cells under the footing); --quads meshes the same grid
 with bilinear quadrilaterals instead (they lock: see the .geo), for comparison only; --triangles
 meshes it with one diagonal per grid cell (an ordinary triangle mesh, 2016 triangles at factor 1:
 linear triangles lock on it, quadratic ones do not). --order 2: -displacement_order 2 (P2
@@ -63,7 +64,8 @@ parser.add_argument("--ranks", type=int, default=1)
 args = parser.parse_args()
 case = CASES[args.case]
 
-if args.steps: case["steps"] = args.steps
+if args.steps:
+    case["steps"] = args.steps
 mesh_kind = "_quads" if args.quads else "_triangles" if args.triangles else ""
 grid = (f"_n{args.cells}" if args.cells else "") + (f"_g{args.growth:g}" if args.growth else "")
 name = f"footing_{args.case}{mesh_kind}{grid}_order{args.order}_{args.factor:g}_np{args.ranks}"
@@ -103,7 +105,8 @@ for i in range(0, len(q), max(1, len(q) // 10)):
     print(f"    {1e3 * settlement[i]:7.2f}  {q[i] / 1e3:8.3f}  {q[i] / q_u:.4f}")
 print(f"    {1e3 * settlement[-1]:7.2f}  {q[-1] / 1e3:8.3f}  {q[-1] / q_u:.4f}  (end)")
 
-chk = common.Checks(f"strip footing, {args.case} (phi = {case['phi']:g} deg)"
+chk = common.Checks(f"{'circular' if case.get('circular') else 'strip'} footing, {args.case} "
+                    f"(phi = {case['phi']:g} deg)"
                     f"{', quadrilaterals' if args.quads else ''}"
                     f"{', ordinary triangles' if args.triangles else ''}"
                     f"{', displacement order 2' if args.order == 2 else ''}")
