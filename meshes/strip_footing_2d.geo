@@ -7,13 +7,16 @@
 // volumetric locking in plane strain: in a fully plastic state of a Tresca soil (isochoric
 // plastic flow) the four constant-strain triangles of a cell carry only three independent
 // volume constraints (Nagtegaal, Parks and Rice 1974), so the collapse load is not
-// overestimated; bilinear quadrilaterals with 2x2 Gauss points lock.
+// overestimated; bilinear quadrilaterals with 2x2 Gauss points lock. crossed = 0 with
+// triangles = 1: each grid cell split by one diagonal into two triangles (an ordinary mesh, on
+// which linear triangles lock; quadratic ones do not, docs/verification.md).
 // Physical curves: footing (0 <= x <= b, y = 0), surface (b <= x <= W, y = 0), left (x = 0),
 // right (x = W), bottom (y = -D); physical surface: soil. Counts scale with -clscale.
 b = 1.0; W = 10.0; D = 6.0;
 If (!Exists(n)) n = 14; EndIf    // cells under the footing at factor 1
 If (!Exists(g)) g = 1.1; EndIf   // growth ratio of the cells away from the footing
 If (!Exists(crossed)) crossed = 1; EndIf
+If (!Exists(triangles)) triangles = 0; EndIf  // with crossed = 0: triangles, not quadrilaterals
 f = Mesh.CharacteristicLengthFactor;
 N = Ceil(n / f - 1e-9);
 h = b / N;
@@ -86,7 +89,7 @@ For j In {0:NY - 1}
       loop = newll; Curve Loop(loop) = {bottom, right, -top, -left};
       s1 = news; Plane Surface(s1) = {loop};
       Transfinite Surface{s1};
-      Recombine Surface{s1};
+      If (!triangles) Recombine Surface{s1}; EndIf
       cells[] += s1;
     EndIf
   EndFor

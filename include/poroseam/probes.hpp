@@ -22,7 +22,8 @@ private:
   struct Located {
     PetscInt cell = -1; ///< on this rank, or -1 when another rank evaluates it
     ReferenceElement element;
-    std::vector<double> phi;
+    std::vector<double> phi;      ///< vertex basis at the probe (pressure)
+    std::vector<double> node_phi; ///< node basis at the probe (displacement)
   };
   DM dm_ = nullptr;
   int dim_ = 0;

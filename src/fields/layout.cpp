@@ -50,17 +50,10 @@ PetscErrorCode checkElementOrder(MPI_Comm comm, const Scene &scene)
   std::string what;
   if (!scene.interfaces.empty())
     what = "interfaces (-interfaces)";
-  else if (scene.axisymmetric)
-    what = "-axisymmetric";
-  else if (!scene.probes.empty())
-    what = "probes (-probe_<name>)";
-  else
-    for (const Region &r : scene.regions)
-      if (r.model == MaterialModel::mohr_coulomb) what = "plastic regions (Mohr-Coulomb)";
   PetscCheck(what.empty(), comm, PETSC_ERR_USER_INPUT,
-             "-displacement_order %d: not available yet with %s; order 2 supports plane-strain "
-             "and 3D scenes of elastic and Biot regions without interfaces, plasticity, "
-             "axisymmetry or probes (use -displacement_order 1)",
+             "-displacement_order %d: not available yet with %s; order 2 supports plane-strain, "
+             "axisymmetric and 3D scenes of elastic, Biot and Mohr-Coulomb regions without "
+             "interfaces (use -displacement_order 1)",
              scene.displacement_order, what.c_str());
   PetscFunctionReturn(0);
 }

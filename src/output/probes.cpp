@@ -45,7 +45,7 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
     auto it = elements.find(ct);
     if (it == elements.end()) {
       ReferenceElement created;
-      PetscCall(ReferenceElement::create(ct, &created));
+      PetscCall(ReferenceElement::create(ct, &created, scene.displacement_order));
       it = elements.emplace(ct, created).first;
     }
     const ReferenceElement &e = it->second;
@@ -86,12 +86,16 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
         closure_dofs += dof;
       }
       PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &npts, &pts));
-      const bool porous = closure_dofs == e.num_vertices * (dim_ + 1);
+      const bool porous = closure_dofs == e.num_nodes * dim_ + e.num_vertices;
       if (loc.cell >= 0 && !porous) continue;
       loc.cell = c;
       loc.element = e;
+      // The displacement from the node basis (order 2: the quadratic field itself), the
+      // pressure from the vertex basis.
       loc.phi.resize(e.num_vertices);
       e.evaluate(xi, loc.phi.data(), nullptr);
+      loc.node_phi.resize(e.num_nodes);
+      e.evaluateNodes(xi, loc.node_phi.data(), nullptr);
       if (porous) porous_found[i] = 1, --open;
     }
     PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
@@ -133,10 +137,10 @@ PetscErrorCode Probes::evaluate(Vec local_solution, std::vector<double> &values)
     PetscScalar *x = nullptr;
     PetscInt n = 0;
     PetscCall(DMPlexVecGetClosure(dm_, s, local_solution, loc.cell, &n, &x));
-    const int nv = loc.element.num_vertices, nu = nv * dim_;
-    for (int a = 0; a < nv; ++a)
+    const int nv = loc.element.num_vertices, nn = loc.element.num_nodes, nu = nn * dim_;
+    for (int a = 0; a < nn; ++a)
       for (int d = 0; d < dim_; ++d)
-        mine[i * per + d] += loc.phi[a] * x[a * dim_ + d];
+        mine[i * per + d] += loc.node_phi[a] * x[a * dim_ + d];
     if (n == nu + nv) {
       has_p[i] = 1;
       for (int a = 0; a < nv; ++a)

@@ -21,6 +21,8 @@ restart the plastic history is in the checkpoint: the restarted run's time serie
         wall time) and fields.h5 (every dataset of every step) equal the uninterrupted run's
         within 1e-12 of each quantity's scale (1 rank: the same computation; a checkpoint makes
         the direct solver analyse its matrix afresh, as the restarted run must).
+--order 2: every run with -displacement_order 2 (the history of more integration points per
+        cell in the checkpoint, the probes on the quadratic field).
 """
 import argparse
 import math
@@ -40,6 +42,8 @@ import newton_history  # noqa: E402
 
 SCENE = os.path.join(HERE, "footing_block.opts")
 FLOOR = 1e-5
+ORDER = []  # -displacement_order 2 with --order 2
+TAG = ""  # output directory suffix with --order 2
 
 
 def orders(residuals, floor):
@@ -69,8 +73,8 @@ def by_centroid(f, index=-1):
 
 
 def case_newton(chk):
-    out = common.output_dir("plastic_scene_newton")
-    common.run(SCENE, out, ["-snes_monitor"])
+    out = common.output_dir("plastic_scene_newton" + TAG)
+    common.run(SCENE, out, ["-snes_monitor"] + ORDER)
     ts = common.read_timeseries(out)
     chk.check("steps cut back", float(np.sum(common.column(ts, "rejected"))), 0)
     chk.check("most Newton iterations of a step", float(np.max(common.column(ts, "newton_its"))), 8)
@@ -101,8 +105,8 @@ def case_newton(chk):
 def case_ranks(chk):
     runs = []
     for ranks in (1, 2):
-        out = common.output_dir(f"plastic_scene_np{ranks}")
-        common.run(SCENE, out, ["-output_fields_every", 20], ranks=ranks)
+        out = common.output_dir(f"plastic_scene_np{ranks}" + TAG)
+        common.run(SCENE, out, ["-output_fields_every", 20] + ORDER, ranks=ranks)
         runs.append((common.read_timeseries(out), read_fields(out)))
     (t1, f1), (t2, f2) = runs
     # Scale of a column: the largest magnitude among the columns of its kind (forces, flows,
@@ -142,12 +146,12 @@ def datasets(path):
 
 
 def case_restart(chk):
-    full = common.output_dir("plastic_scene_full")
-    common.run(SCENE, full, ["-checkpoint_every", 6])
-    part = common.output_dir("plastic_scene_part")
+    full = common.output_dir("plastic_scene_full" + TAG)
+    common.run(SCENE, full, ["-checkpoint_every", 6] + ORDER)
+    part = common.output_dir("plastic_scene_part" + TAG)
     # Stops at step 12 (exit non-zero, a checkpoint of step 12), then continues.
     cmd = [common.EXE, "-options_file", SCENE, "-output_dir", part, "-ts_max_steps", "12",
-           "-checkpoint_every", "6"]
+           "-checkpoint_every", "6"] + [str(a) for a in ORDER]
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     with open(os.path.join(part, "log_first.txt"), "w") as log:
         rc = subprocess.run(cmd, cwd=common.SOURCE, env=env, stdout=log,
@@ -159,7 +163,7 @@ def case_restart(chk):
         history = f["skeleton_history"][...] if "skeleton_history" in f else np.zeros(0)
     chk.check("plastic history in the checkpoint (max value)", -float(np.max(np.abs(history),
                                                                              initial=0.0)), -1e-9)
-    common.run(SCENE, part, ["-restart", part, "-checkpoint_every", 6])
+    common.run(SCENE, part, ["-restart", part, "-checkpoint_every", 6] + ORDER)
     a, b = common.read_timeseries(full), common.read_timeseries(part)
     chk.check("rows", float(len(a["step"]) != len(b["step"])), 0)
     worst = 0.0
@@ -187,8 +191,14 @@ def case_restart(chk):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--case", required=True, choices=["newton", "ranks", "restart"])
-    case = ap.parse_args().case
-    chk = common.Checks(f"plastic scene, {case}")
+    ap.add_argument("--order", type=int, default=1, choices=(1, 2), help="-displacement_order")
+    args = ap.parse_args()
+    case = args.case
+    global TAG
+    if args.order == 2:
+        ORDER.extend(["-displacement_order", 2])
+        TAG = "_order2"
+    chk = common.Checks(f"plastic scene, {case}" + (", displacement order 2" if ORDER else ""))
     {"newton": case_newton, "ranks": case_ranks, "restart": case_restart}[case](chk)
     chk.finish()
 

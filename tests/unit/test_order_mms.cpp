@@ -11,6 +11,13 @@
 // (section constraints, every constrained point of the boundary closure). One Newton step from
 // the interpolant is exact (the problem is linear).
 // Expected (smooth solution): P1/Q1 u: L2 2, energy 1; P2/Q2 u: L2 3, energy 2, p (P1) L2 2.
+//
+// Axisymmetric (x = r, y = z; the unit square touches the axis r = 0): the same fields with
+// phases that make them regular 3D fields (u_r odd in r, u_z and p even), the cylindrical
+// operators in the forcing (hoop strain u_r / r, vector Laplacian (lap u)_r = lap u_r - u_r / r^2,
+// lap f = f_rr + f_r / r + f_zz), and every integral (forcing, errors) weighted by 2 pi r like
+// the kernel's. The energy norm includes the hoop strain. Expected: the plane rates (weighted
+// norms, Mercier and Raugel 1982).
 #include "poroseam/layout.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/reference_element.hpp"
@@ -57,49 +64,72 @@ struct Product {
 
 struct Exact {
   int dim;
-  double alpha; ///< Biot's coefficient: 0 decouples the displacement from the pressure
+  double alpha;      ///< Biot's coefficient: 0 decouples the displacement from the pressure
+  bool axisymmetric; ///< x = r, y = z (dim 2)
   Product u[3], p;
   double lambda, G;
-  Exact(int dim_, double alpha_) : dim(dim_), alpha(alpha_)
+  Exact(int dim_, double alpha_, bool axisymmetric_ = false)
+      : dim(dim_), alpha(alpha_), axisymmetric(axisymmetric_)
   {
     u[0] = {0.1, {1.1 * M_PI, 0.7 * M_PI, 0.9 * M_PI}, {0.3, 0.5, 0.2}};
     u[1] = {0.08, {0.6 * M_PI, 1.3 * M_PI, 0.8 * M_PI}, {0.7, 0.1, 0.4}};
     u[2] = {0.06, {0.9 * M_PI, 0.8 * M_PI, 1.2 * M_PI}, {0.2, 0.6, 0.9}};
     p = {0.1, {0.8 * M_PI, 1.2 * M_PI, 0.7 * M_PI}, {0.4, 0.2, 0.6}};
+    if (axisymmetric) {
+      // Regular on the axis: u_r = 0 there (odd in r), u_z and p even in r.
+      u[0].f[0] = 0.0;
+      u[1].f[0] = 0.5 * M_PI;
+      p.f[0] = 0.5 * M_PI;
+    }
     G = kYoung / (2 * (1 + kPoisson));
     lambda = kYoung * kPoisson / ((1 + kPoisson) * (1 - 2 * kPoisson));
   }
+  /// u_r / r, the hoop strain (0 in plane strain).
+  double hoop(const double *x) const { return axisymmetric ? u[0].value(dim, x) / x[0] : 0.0; }
   double divU(const double *x) const
   {
-    double s = 0.0;
+    double s = hoop(x);
     for (int i = 0; i < dim; ++i)
       s += u[i].derivative(dim, x, i, -1);
     return s;
   }
+  /// lap f of a scalar (cylindrical when axisymmetric: + f_r / r).
+  double laplacian(const Product &f, const double *x) const
+  {
+    double lap = axisymmetric ? f.derivative(dim, x, 0, -1) / x[0] : 0.0;
+    for (int j = 0; j < dim; ++j)
+      lap += f.derivative(dim, x, j, j);
+    return lap;
+  }
   void bodyForce(const double *x, double f[3]) const
   {
     for (int i = 0; i < dim; ++i) {
-      double grad_div = 0.0, lap = 0.0;
-      for (int j = 0; j < dim; ++j) {
+      double grad_div = 0.0, lap = laplacian(u[i], x);
+      for (int j = 0; j < dim; ++j)
         grad_div += u[j].derivative(dim, x, i, j);
-        lap += u[i].derivative(dim, x, j, j);
+      if (axisymmetric) {
+        // d/dx_i (u_r / r); (lap u)_r - u_r / r^2.
+        const double r = x[0], ur = u[0].value(dim, x);
+        grad_div += i == 0 ? u[0].derivative(dim, x, 0, -1) / r - ur / (r * r)
+                           : u[0].derivative(dim, x, i, -1) / r;
+        if (i == 0) lap -= ur / (r * r);
       }
       f[i] = -((lambda + G) * grad_div + G * lap) + alpha * p.derivative(dim, x, i, -1);
     }
   }
   double source(const double *x) const
   {
-    double lap = 0.0;
-    for (int j = 0; j < dim; ++j)
-      lap += p.derivative(dim, x, j, j);
-    return alpha * divU(x) + kStorage * p.value(dim, x) - kMobility * lap;
+    return alpha * divU(x) + kStorage * p.value(dim, x) - kMobility * laplacian(p, x);
   }
+  /// Weight of a point's measure: 2 pi r when axisymmetric (the kernel's), else 1.
+  double ring(const double *x) const { return axisymmetric ? 2.0 * M_PI * x[0] : 1.0; }
 };
 
-Scene mmsScene(int dim, int order, double alpha)
+Scene mmsScene(int dim, int order, double alpha, bool axisymmetric)
 {
   Scene s;
   s.dim = dim;
+  s.axisymmetric = axisymmetric;
   s.displacement_order = order;
   Region soil;
   soil.name = "soil";
@@ -174,11 +204,12 @@ PetscErrorCode interpolate(DM dm, const Exact &ex, Vec local)
 }
 
 /// Solves the manufactured problem on an n^dim mesh and integrates the errors.
-PetscErrorCode solveMms(int dim, bool simplex, double alpha, int order, int n, Errors *err)
+PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, int order, int n,
+                        Errors *err)
 {
   DM dm;
-  Scene scene = mmsScene(dim, order, alpha);
-  Exact ex(dim, alpha);
+  Scene scene = mmsScene(dim, order, alpha, axisymmetric);
+  Exact ex(dim, alpha, axisymmetric);
   Problem problem;
   PetscFunctionBeginUser;
   PetscCall(test_support::createOrderMesh(dim, simplex, n, 0.3 / 8.0, &dm));
@@ -254,14 +285,15 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, int order, int n, E
       PetscCheck(mapQuadraturePoint(*e, xc, q, g) > 0.0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "inverted cell %d", (int)c);
       const double *N = order == 1 ? g.phi : g.node_phi;
+      const double w = g.weight * ex.ring(g.x);
       double f[3];
       ex.bodyForce(g.x, f);
       const double source = ex.source(g.x);
       for (int a = 0; a < nn; ++a)
         for (int i = 0; i < dim; ++i)
-          Fb[a * dim + i] += g.weight * f[i] * N[a];
+          Fb[a * dim + i] += w * f[i] * N[a];
       for (int a = 0; a < e->num_vertices; ++a)
-        Fb[nu + a] += g.weight * source * g.phi[a];
+        Fb[nu + a] += w * source * g.phi[a];
     }
     PetscCall(DMPlexVecRestoreClosure(dm, cs, coords, c, &nc, &xc));
     PetscCall(DMPlexVecSetClosure(dm, s, blocal, c, Fb.data(), ADD_ALL_VALUES));
@@ -301,27 +333,30 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, int order, int n, E
     PetscCall(DMPlexVecGetClosure(dm, s, local, c, &nx, &x));
     for (int q = 0; q < e->num_quadrature; ++q) {
       mapQuadraturePoint(*e, xc, q, g);
+      const double w = g.weight * ex.ring(g.x);
       double u[3], gu[3][3], p;
       fields(*e, g, x, u, gu, &p);
       double eps[3][3] = {{0}}, tr = 0.0;
       for (int i = 0; i < dim; ++i) {
         const double du = u[i] - ex.u[i].value(dim, g.x);
-        err->u_l2 += g.weight * du * du;
+        err->u_l2 += w * du * du;
         for (int j = 0; j < dim; ++j) {
           const double gij = gu[i][j] - ex.u[i].derivative(dim, g.x, j, -1);
           eps[i][j] += 0.5 * gij;
           eps[j][i] += 0.5 * gij;
         }
       }
-      for (int i = 0; i < dim; ++i)
+      // The hoop strain's error (u_r,h - u_r) / r; index 2 is unused in plane strain.
+      if (axisymmetric) eps[2][2] = u[0] / g.x[0] - ex.hoop(g.x);
+      for (int i = 0; i < 3; ++i)
         tr += eps[i][i];
       double energy = lambda * tr * tr;
-      for (int i = 0; i < dim; ++i)
-        for (int j = 0; j < dim; ++j)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
           energy += 2.0 * G * eps[i][j] * eps[i][j];
-      err->u_energy += g.weight * energy;
+      err->u_energy += w * energy;
       const double dp = p - ex.p.value(dim, g.x);
-      err->p_l2 += g.weight * dp * dp;
+      err->p_l2 += w * dp * dp;
     }
     PetscCall(DMPlexVecRestoreClosure(dm, s, local, c, &nx, &x));
     PetscCall(DMPlexVecRestoreClosure(dm, cs, coords, c, &nc, &xc));
@@ -349,6 +384,7 @@ struct Case {
   bool simplex;
   double alpha;
   std::vector<int> sizes;
+  bool axisymmetric = false;
 };
 
 class OrderMms : public ::testing::TestWithParam<Case> {};
@@ -356,17 +392,18 @@ class OrderMms : public ::testing::TestWithParam<Case> {};
 TEST_P(OrderMms, RatesMatchTheElementOrder)
 {
   const Case c = GetParam();
-  const char *cell = c.dim == 2 ? (c.simplex ? "triangles" : "quadrilaterals")
-                                : (c.simplex ? "tetrahedra" : "hexahedra");
+  const std::string cell = std::string(c.axisymmetric ? "axisymmetric " : "") +
+                           (c.dim == 2 ? (c.simplex ? "triangles" : "quadrilaterals")
+                                       : (c.simplex ? "tetrahedra" : "hexahedra"));
   std::vector<Errors> errors[3];
   for (int order = 1; order <= 2; ++order)
     for (int n : c.sizes) {
       Errors e;
-      ASSERT_EQ(solveMms(c.dim, c.simplex, c.alpha, order, n, &e), 0);
+      ASSERT_EQ(solveMms(c.dim, c.simplex, c.alpha, c.axisymmetric, order, n, &e), 0);
       errors[order].push_back(e);
       std::printf("%dD %s alpha %g order %d n %2d unknowns %6ld  |u-uh|_L2 %.3e  |u-uh|_E %.3e  "
                   "|p-ph|_L2 %.3e\n",
-                  c.dim, cell, c.alpha, order, n, e.unknowns, e.u_l2, e.u_energy, e.p_l2);
+                  c.dim, cell.c_str(), c.alpha, order, n, e.unknowns, e.u_l2, e.u_energy, e.p_l2);
     }
   // Rates between the last two meshes (h halves), and the expected ones with a margin of 0.2.
   auto rate = [&](int order, double Errors::*norm) {
@@ -376,8 +413,8 @@ TEST_P(OrderMms, RatesMatchTheElementOrder)
   };
   for (int order = 1; order <= 2; ++order)
     std::printf("%dD %s alpha %g order %d rates: u L2 %.2f, u energy %.2f, p L2 %.2f\n", c.dim,
-                cell, c.alpha, order, rate(order, &Errors::u_l2), rate(order, &Errors::u_energy),
-                rate(order, &Errors::p_l2));
+                cell.c_str(), c.alpha, order, rate(order, &Errors::u_l2),
+                rate(order, &Errors::u_energy), rate(order, &Errors::p_l2));
   EXPECT_GE(rate(1, &Errors::u_l2), 2.0 - 0.2);
   EXPECT_GE(rate(1, &Errors::u_energy), 1.0 - 0.2);
   // P2 displacement in L2: h^3 when the pressure does not act on it (alpha = 0); coupled, the
@@ -397,9 +434,13 @@ INSTANTIATE_TEST_SUITE_P(
     Meshes, OrderMms,
     ::testing::Values(Case{2, false, 0.8, {8, 16, 32}}, Case{2, true, 0.8, {8, 16, 32}},
                       Case{2, false, 0.0, {8, 16, 32}}, Case{2, true, 0.0, {8, 16, 32}},
-                      Case{3, false, 0.8, {2, 4, 8}}, Case{3, true, 0.8, {2, 4, 8}}),
+                      Case{3, false, 0.8, {2, 4, 8}}, Case{3, true, 0.8, {2, 4, 8}},
+                      Case{2, true, 0.0, {8, 16, 32}, true}, Case{2, false, 0.0, {8, 16, 32}, true},
+                      Case{2, true, 0.8, {8, 16, 32}, true}),
     [](const ::testing::TestParamInfo<Case> &info) {
-      return std::string(info.param.dim == 2 ? "plane_strain_" : "solid_") +
+      return std::string(info.param.axisymmetric ? "axisymmetric_"
+                         : info.param.dim == 2   ? "plane_strain_"
+                                                 : "solid_") +
              (info.param.simplex ? "simplices" : "tensor_cells") +
              (info.param.alpha == 0.0 ? "_uncoupled" : "_biot");
     });

@@ -5,7 +5,9 @@
 // 3D (drained). An elastic region beside the plastic one takes the kernel's linear path in the
 // same assembly. The displacement is affine plus a small random part, so every integration
 // point of the plastic region is in the same regime (checked through the committed yield
-// states), away from the kinks where finite differences are meaningless.
+// states), away from the kinks where finite differences are meaningless. At displacement order 2
+// (Taylor-Hood: P2 / Lagrange Q2, more integration points per cell, each with its own history)
+// the same regimes, the quadratic nodes (edges, faces, cells) also on the affine field.
 #include "poroseam/layout.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
@@ -28,6 +30,7 @@ struct Case {
   Geometry geometry;
   physics::YieldState expected; ///< the plastic region's state at the evaluated displacement
   double strain[3][3];          ///< affine part of the displacement: u = strain x
+  int order = 1;                ///< displacement order
 };
 
 Scene plasticScene(const Case &c)
@@ -35,6 +38,7 @@ Scene plasticScene(const Case &c)
   Scene s;
   s.dim = c.geometry == Geometry::three_d ? 3 : 2;
   s.axisymmetric = c.geometry == Geometry::axisymmetric;
+  s.displacement_order = c.order;
   s.drained = c.geometry != Geometry::plane_strain;
   Region soil;
   soil.name = "soil";
@@ -91,33 +95,41 @@ struct Result {
 };
 
 /// Local vector `u`: displacement strain * x (+ noise of relative size `noise`), pressure
-/// initial + random (1e4 Pa).
+/// initial + random (1e4 Pa). Every point with displacement unknowns (vertices; at order 2 also
+/// edges, faces, cells) at the centroid of its closure's vertices, where its node sits.
 PetscErrorCode setState(DM dm, const Problem &problem, int dim, const double strain[3][3],
                         double factor, double noise, std::mt19937 &rng, Vec u)
 {
   std::uniform_real_distribution<double> r(-1.0, 1.0);
   PetscSection s, cs;
   Vec coords;
-  const PetscScalar *x;
+  const double *x;
   PetscScalar *a;
-  PetscInt vStart, vEnd, nf;
+  PetscInt pStart, pEnd, nf;
   PetscFunctionBeginUser;
   PetscCall(problem.initialState(u));
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(PetscSectionGetNumFields(s, &nf));
   PetscCall(DMGetCoordinateSection(dm, &cs));
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  PetscCall(VecGetArrayRead(coords, &x));
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   PetscCall(VecGetArray(u, &a));
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    PetscInt off, coff, dof;
+  for (PetscInt v = pStart; v < pEnd; ++v) {
+    PetscInt off, dof, nc = 0;
+    PetscCall(PetscSectionGetFieldDof(s, v, kDisplacementField, &dof));
+    if (!dof) continue;
     PetscCall(PetscSectionGetFieldOffset(s, v, kDisplacementField, &off));
-    PetscCall(PetscSectionGetOffset(cs, v, &coff));
+    PetscScalar *xc = nullptr;
+    double xp[3] = {0, 0, 0};
+    PetscCall(DMPlexVecGetClosure(dm, cs, coords, v, &nc, &xc));
+    for (PetscInt k = 0; k < nc; ++k)
+      xp[k % dim] += xc[k] / (nc / dim);
+    PetscCall(DMPlexVecRestoreClosure(dm, cs, coords, v, &nc, &xc));
+    x = xp;
     for (int i = 0; i < dim; ++i) {
       double value = 0.0;
       for (int j = 0; j < dim; ++j)
-        value += factor * strain[i][j] * x[coff + j];
+        value += factor * strain[i][j] * x[j];
       a[off + i] = value + noise * 1e-3 * r(rng);
     }
     if (nf <= kPressureField) continue;
@@ -127,7 +139,6 @@ PetscErrorCode setState(DM dm, const Problem &problem, int dim, const double str
     a[off] += 1e4 * r(rng);
   }
   PetscCall(VecRestoreArray(u, &a));
-  PetscCall(VecRestoreArrayRead(coords, &x));
   PetscFunctionReturn(0);
 }
 
@@ -289,6 +300,41 @@ const Case kCases[] = {
      {{-8e-3, 1e-3, 0}, {1e-3, 2e-3, 0}, {0, 0, -2e-3}}},
     {"three_d_edge", Geometry::three_d, YS::edge, {{1e-3, 0, 0}, {0, 1e-3, 0}, {0, 0, -4e-3}}},
     {"three_d_apex", Geometry::three_d, YS::apex, {{5e-3, 0, 0}, {0, 5e-3, 0}, {0, 0, 5e-3}}},
+    {"order2_plane_strain_elastic",
+     Geometry::plane_strain,
+     YS::elastic,
+     {{-1e-4, 2e-5, 0}, {2e-5, 5e-5, 0}, {0, 0, 0}},
+     2},
+    {"order2_plane_strain_face",
+     Geometry::plane_strain,
+     YS::face,
+     {{-4e-3, 5e-4, 0}, {5e-4, 1e-3, 0}, {0, 0, 0}},
+     2},
+    {"order2_plane_strain_apex",
+     Geometry::plane_strain,
+     YS::apex,
+     {{5e-3, 0, 0}, {0, 5e-3, 0}, {0, 0, 0}},
+     2},
+    {"order2_axisymmetric_face",
+     Geometry::axisymmetric,
+     YS::face,
+     {{-2e-3, 0, 0}, {8e-3, -2e-3, 0}, {0, 0, 0}},
+     2},
+    {"order2_axisymmetric_edge",
+     Geometry::axisymmetric,
+     YS::edge,
+     {{1e-3, 0, 0}, {0, -4e-3, 0}, {0, 0, 0}},
+     2},
+    {"order2_three_d_face",
+     Geometry::three_d,
+     YS::face,
+     {{-8e-3, 1e-3, 0}, {1e-3, 2e-3, 0}, {0, 0, -2e-3}},
+     2},
+    {"order2_three_d_edge",
+     Geometry::three_d,
+     YS::edge,
+     {{1e-3, 0, 0}, {0, 1e-3, 0}, {0, 0, -4e-3}},
+     2},
 };
 
 } // namespace
