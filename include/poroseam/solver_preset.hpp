@@ -7,8 +7,8 @@
 //                                             nothing when -ksp_type or -pc_type is given (a
 //                                             preset file added with -options_file, say)
 // auto is the default: a scene that names no solver (no -solver_preset, -ksp_type, -pc_type)
-// gets it, not PETSc's GMRES with ILU, which fails on these saddle-point systems (issue 24: a
-// scene without a solver line ran 9 attempts of 10,000 Krylov iterations each).
+// gets it, not PETSc's GMRES with ILU(0), slow or failing on these saddle-point systems
+// (issue 24: a scene without a solver line ran 9 attempts of 10,000 Krylov iterations each).
 // Options already set (scene file or command line) keep their values: a preset only fills in
 // what is not set. Measured with scripts/bench on the 3D quarter caisson (2 ranks): at 5k
 // unknowns MUMPS is faster, at 37k the fieldsplit preset takes about 0.8 of MUMPS's time per
