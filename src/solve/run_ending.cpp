@@ -57,9 +57,11 @@ PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *me
     // Not the time step's fault: no advice about it (solve_failure.cpp).
     *ending = RunEnding::failed_step;
     std::snprintf(text, sizeof(text),
-                  "step %d failed (%s): %s. Results up to t = %g s are in %s%s. Try: %s",
-                  run.step + 1, TSConvergedReasons[reason], linear_failure.c_str(), t,
-                  run.scene.output_dir.c_str(), checkpoint_note.c_str(), linear_advice.c_str());
+                  "step %d failed (%s): %s. Results up to t = %g s are in %s%s%s. %s", run.step + 1,
+                  TSConvergedReasons[reason], linear_failure.c_str(), t,
+                  run.scene.output_dir.c_str(), checkpoint_note.c_str(),
+                  restart_hint.empty() ? "" : (restart_hint + " and other solver options").c_str(),
+                  linear_advice.c_str());
   } else if (reason < 0) {
     *ending = RunEnding::failed_step;
     const std::string newton =

@@ -92,23 +92,25 @@ bool describeLinearFailure(const Run &run, int attempts, double t, std::string *
             " times for it and no more (a smaller step seldom mends a linear solver)";
   // What to try, by what failed.
   const std::string singular =
-      "a singular matrix: check that the boundary conditions hold every body against "
-      "rigid-body motion (also a body held only by an interface that opens) and that each "
-      "porous region's water can drain or has its pressure prescribed somewhere";
+      "the matrix is singular or nearly so: check that the boundary conditions hold every body "
+      "against rigid-body motion (also a body held only by an interface that opens) and that "
+      "each porous region's water can drain or has its pressure prescribed somewhere";
+  const std::string direct = "Try the direct solver (-solver_preset direct, MUMPS LU)";
   std::string remedy;
-  if (f.ksp == KSP_DIVERGED_PC_FAILED && directSolver(f))
-    remedy = "the factorisation failed, which means " + singular;
+  if (f.pc == PC_FACTOR_OUTMEMORY)
+    remedy = "The factorisation ran out of memory: take the iterative solver (-solver_preset "
+             "fieldsplit) or more ranks";
+  else if (f.ksp == KSP_DIVERGED_PC_FAILED && directSolver(f))
+    remedy = "A factorisation that fails means " + singular;
   else if (f.ksp == KSP_DIVERGED_ITS)
-    remedy = "take the direct solver (-solver_preset direct, MUMPS LU: 2D and 3D up to a few "
-             "10,000 unknowns) or allow more iterations (-ksp_max_it, now " +
-             std::to_string((long)f.ksp_its) + "); if the direct solver fails too, it is " +
-             singular;
+    remedy = direct + " or more iterations (-ksp_max_it, now " + std::to_string((long)f.ksp_its) +
+             "); if the direct solver fails too, " + singular;
+  else if (directSolver(f))
+    remedy = "Check the solver options; or " + singular;
   else
-    remedy =
-        std::string(directSolver(f) ? "" : "take the direct solver (-solver_preset direct); ") +
-        "if that fails too, it is " + singular;
+    remedy = direct + "; if it fails too, " + singular;
   *failure = what;
-  *advice = remedy + " (-ksp_converged_reason prints every linear solve)";
+  *advice = remedy + " (-ksp_converged_reason prints every linear solve).";
   return true;
 }
 

@@ -18,7 +18,9 @@ such (issue 24, item 1; docs/scenes.md, "Time stepping and solvers"). Label "sol
   after three attempts of its first step (two cuts for a failed linear solve), with a message
   naming DIVERGED_LINEAR_SOLVE and the Krylov reason DIVERGED_ITS, advising the direct solver
   and giving no advice about -ts_dt; run.yaml says 'failed step', exit status 1, that message
-  and 3 rejected attempts. (Before issue 24 it said "Newton did not converge ... even after 8
+  and 3 rejected attempts. The same with a factorisation that fails (PETSc's LU with
+  -pc_factor_zeropivot 1e30: every pivot counts as zero): KSP DIVERGED_PC_FAILED, PC
+  FACTOR_NUMERIC_ZEROPIVOT, and the advice for a singular matrix. (Before issue 24 it said "Newton did not converge ... even after 8
   cuts of the time step ... a smaller -ts_dt ... may help" after 9 attempts.)
 """
 import argparse
@@ -161,6 +163,24 @@ def linear_failure():
     checks.check(f"attempts of the step: {rejected} (the first and two cuts)", 0, 0, ok=rejected == 3)
     checks.check("run.yaml solver: as given", 0, 0,
                  ok=seg.get("solver") == "as given (-ksp_type gmres, -pc_type none)")
+    # A factorisation that fails (PETSc's LU told that every pivot is zero, as a singular
+    # matrix's would be): the reason, and the advice for a singular matrix.
+    out = common.output_dir("solver_default_zero_pivot")
+    cmd = [common.EXE, "-options_file", path, "-output_dir", out, "-ts_max_time", "2",
+           "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "petsc",
+           "-pc_factor_zeropivot", "1e30"]
+    print("run:", " ".join(cmd), flush=True)
+    res = subprocess.run(cmd, cwd=common.SOURCE, capture_output=True, text=True, timeout=120)
+    text = res.stdout + res.stderr
+    error = [line for line in text.splitlines() if "error" in line]
+    message = error[-1] if error else ""
+    print("     " + (message or "(no error line)"), flush=True)
+    checks.check(f"zero pivot: exit status {res.returncode} != 0", 0, 0, ok=res.returncode != 0)
+    checks.check("zero pivot: KSP DIVERGED_PC_FAILED, PC FACTOR_NUMERIC_ZEROPIVOT", 0, 0,
+                 ok="KSP DIVERGED_PC_FAILED" in message and "PC FACTOR_NUMERIC_ZEROPIVOT" in message)
+    checks.check("zero pivot: advice for a singular matrix (boundary conditions)", 0, 0,
+                 ok="singular" in message and "boundary conditions" in message)
+    checks.check("zero pivot: no advice about the time step (-ts_dt)", 0, 0, ok="-ts_dt" not in text)
     checks.finish()
 
 
