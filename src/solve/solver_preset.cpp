@@ -104,9 +104,10 @@ PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns, std::str
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam solver preset", "docs/scenes.md");
   PetscCall(PetscOptionsString("-solver_preset",
-                               "auto, direct, fieldsplit or <name>: insert "
-                               "options/solvers/<name>.opts (options not set already); auto "
-                               "unless -ksp_type or -pc_type is given",
+                               "auto (the default), direct, fieldsplit or <name>: insert "
+                               "options/solvers/<name>.opts (options not set already); auto: "
+                               "direct, fieldsplit in 3D above -solver_auto_threshold, none "
+                               "when -ksp_type or -pc_type is given",
                                "docs/scenes.md", "auto", buffer, sizeof buffer, &given));
   PetscCall(PetscOptionsInt("-solver_auto_threshold",
                             "unknowns above which auto chooses the iterative preset in 3D",
