@@ -14,6 +14,7 @@ struct MeshLimits {
   bool memory_check = true;    ///< refuse a mesh whose estimated memory exceeds the machine's
   std::string preset;          ///< -solver_preset as given ("" when none)
   std::string pc_type;         ///< -pc_type as given ("" when none)
+  std::string ksp_type;        ///< -ksp_type as given ("" when none)
   long auto_threshold = 30000; ///< -solver_auto_threshold
   int ranks = 1;
 };

@@ -47,6 +47,9 @@ public:
   PetscErrorCode begin(MPI_Comm comm, const std::string &output_dir, bool restart);
   /// Unknowns per field (the 'field ... unknowns' lines), written at once. Collective.
   PetscErrorCode setUnknowns(MPI_Comm comm, const std::vector<std::pair<std::string, long>> &f);
+  /// The linear solver taken (the 'solver ...' line: "preset direct (auto, the default: ...)",
+  /// "as given (-pc_type lu)"), written at once. Collective.
+  PetscErrorCode setSolver(MPI_Comm comm, const std::string &solver);
   /// The end of a run that reached its time loop's end: gathers the peak memory of every rank
   /// (collective), writes the final record and prints the summary. `stop_signal`: the
   /// signal that stopped the run (0: none).
@@ -85,6 +88,7 @@ private:
   std::string command_line_, scene_files_;
   std::vector<std::pair<std::string, std::string>> options_; ///< name, value ("\x01": none)
   std::vector<std::pair<std::string, long>> unknowns_;
+  std::string solver_; ///< "" until known
   RunEnding ending_ = RunEnding::running;
   int exit_status_ = 0;
   std::string message_;

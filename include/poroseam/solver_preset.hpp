@@ -4,8 +4,11 @@
 //   -solver_preset auto                       MUMPS LU (direct) unless the scene is 3D with more
 //                                             than -solver_auto_threshold unknowns (default
 //                                             30000), then the iterative fieldsplit preset;
-//                                             nothing when -pc_type is given (a preset file
-//                                             added with -options_file, say)
+//                                             nothing when -ksp_type or -pc_type is given (a
+//                                             preset file added with -options_file, say)
+// auto is the default: a scene that names no solver (no -solver_preset, -ksp_type, -pc_type)
+// gets it, not PETSc's GMRES with ILU(0), slow or failing on these saddle-point systems
+// (issue 24: a scene without a solver line ran 9 attempts of 10,000 Krylov iterations each).
 // Options already set (scene file or command line) keep their values: a preset only fills in
 // what is not set. Measured with scripts/bench on the 3D quarter caisson (2 ranks): at 5k
 // unknowns MUMPS is faster, at 37k the fieldsplit preset takes about 0.8 of MUMPS's time per
@@ -24,9 +27,17 @@ std::string solverPresetFile(const std::string &name);
 /// The names of the presets, "direct, fieldsplit".
 std::string solverPresetList();
 
-/// Reads -solver_preset; with a preset, inserts its options (those not set already) and says
-/// which on stdout. `dim` and `unknowns` (global) decide for auto. Call before the solvers
-/// read their options.
-PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns);
+/// The preset -solver_preset takes: `preset` as given ("" when not given: auto), or for auto
+/// "" when a solver is named (-ksp_type or -pc_type given), else "direct" or "fieldsplit" by
+/// `dim` and the global number of `unknowns` against `threshold` (-solver_auto_threshold).
+/// Pure: also what the mesh's memory estimate expects (mesh_limits.cpp).
+std::string chosenPreset(const std::string &preset, bool solver_named, int dim, double unknowns,
+                         long threshold);
+
+/// Reads -solver_preset (default auto); with a preset, inserts its options (those not set
+/// already) and says which on stdout; *choice is that line's text for run.yaml ("preset direct
+/// (auto, the default: ...)", "as given (-pc_type lu)"). `dim` and `unknowns` (global) decide
+/// for auto. Call before the solvers read their options.
+PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns, std::string *choice);
 
 } // namespace poroseam

@@ -1,4 +1,5 @@
 #include "poroseam/mesh_limits.hpp"
+#include "poroseam/solver_preset.hpp"
 
 #include "poroseam/scene_options.hpp"
 
@@ -123,6 +124,8 @@ PetscErrorCode readMeshLimits(MPI_Comm comm, MeshLimits *limits)
   if (set) limits->preset = buffer;
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-pc_type", buffer, sizeof buffer, &set));
   if (set) limits->pc_type = buffer;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-ksp_type", buffer, sizeof buffer, &set));
+  if (set) limits->ksp_type = buffer;
   PetscInt threshold = 30000;
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-solver_auto_threshold", &threshold, &set));
   limits->auto_threshold = (long)threshold;
@@ -137,15 +140,17 @@ std::string checkMeshMemory(const MeshLimits &limits, double nodes, int dim,
 {
   note->clear();
   const double unknowns = nodes * (dim + 1);
-  // The preset's choice (solver_preset.cpp): -pc_type given wins; auto is iterative in 3D
-  // above the threshold; no preset and no -pc_type: PETSc's defaults, counted as direct.
+  // The preset's choice (solver_preset.cpp's chosenPreset): -pc_type given wins; then the
+  // preset, auto by default (iterative in 3D above the threshold); a -ksp_type of the user's
+  // with PETSc's default preconditioner (ILU) is iterative.
   bool iterative;
+  const std::string preset =
+      chosenPreset(limits.preset, !limits.pc_type.empty() || !limits.ksp_type.empty(), dim,
+                   unknowns, limits.auto_threshold);
   if (!limits.pc_type.empty())
     iterative = limits.pc_type != "lu" && limits.pc_type != "cholesky";
-  else if (limits.preset == "auto")
-    iterative = dim == 3 && unknowns > limits.auto_threshold;
   else
-    iterative = limits.preset == "fieldsplit";
+    iterative = preset.empty() || preset == "fieldsplit";
   const double need =
       iterative ? iterativeBytes(unknowns, limits.ranks) : directBytes(unknowns, dim, limits.ranks);
   std::string which;

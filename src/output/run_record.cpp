@@ -152,6 +152,14 @@ PetscErrorCode RunRecord::setUnknowns(MPI_Comm comm,
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode RunRecord::setSolver(MPI_Comm comm, const std::string &solver)
+{
+  PetscFunctionBeginUser;
+  solver_ = solver;
+  PetscCall(writeOnRankZero(comm));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RunRecord::finish(MPI_Comm comm, RunEnding ending, const std::string &message,
                                  RunSummary summary, int stop_signal)
 {
@@ -290,6 +298,7 @@ std::string RunRecord::text() const
   for (const auto &[name, n] : unknowns_)
     y << in << "  " << quoted(name) << ": " << n << "\n", total += n;
   if (!unknowns_.empty()) y << in << "  total: " << total << "\n";
+  y << in << "solver: " << (solver_.empty() ? "null" : quoted(solver_)) << "\n";
   if (has_progress_) {
     // Rewritten after each accepted step: what a run killed now leaves, and how to go on.
     y << in << "progress:\n";

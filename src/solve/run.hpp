@@ -34,6 +34,19 @@ struct BoundaryDofs {
   std::vector<PetscInt> interface_pressure; ///< p3 of interfaces ending here
 };
 
+/// Why the attempts of the step in progress failed (solve_failure.cpp): the last failed
+/// attempt's Newton reason and, when its linear solve failed, that solve's reason.
+struct AttemptFailure {
+  int step = -1; ///< the accepted steps before the attempts (run.step): whose attempts these are
+  SNESConvergedReason snes = SNES_CONVERGED_ITERATING; ///< of the last failed attempt
+  KSPConvergedReason ksp = KSP_CONVERGED_ITERATING;    ///< its last linear solve's
+  PetscInt ksp_its = 0;                                ///< that solve's iterations
+  PCFailedReason pc = PC_NOERROR;                      ///< the preconditioner's
+  std::string ksp_type, pc_type;
+  int linear_in_row = 0;  ///< consecutive attempts whose linear solve failed
+  int linear_in_step = 0; ///< attempts of the step whose linear solve failed
+};
+
 struct Run {
   Scene scene;
   DM dm = nullptr;
@@ -100,6 +113,7 @@ struct Run {
   ProgressLine progress_line;
   bool step_abandoned = false;
   double accepted_next_dt = 0.0;
+  AttemptFailure failure; ///< why the step in progress failed so far
 };
 
 inline PetscErrorCode currentDt(Run &run, double *dt)
@@ -160,6 +174,17 @@ PetscErrorCode stopDuringStep(Run &run, SNESConvergedReason *reason);
 /// After TSSolve: a step abandoned by a stop leaves X and the step size as after the last
 /// accepted step.
 PetscErrorCode restoreAbandonedStep(Run &run, Vec X);
+
+// solve_failure.cpp: why an attempt failed; a failed linear solve is not the time step's fault.
+
+/// TS post-stage hook (after every Newton solve, converged or not): notes a failed attempt in
+/// run.failure, and ends the step (no more cuts) after kLinearFailureCuts + 1 attempts in a
+/// row whose linear solve failed.
+PetscErrorCode noteAttempt(TS ts, PetscReal stage_time, PetscInt stage, Vec *Y);
+/// When the last attempt of the failed step (of `attempts`, from time t) failed in its linear
+/// solve: what failed (reasons, solver, counts) and what to try instead; false otherwise.
+bool describeLinearFailure(const Run &run, int attempts, double t, std::string *failure,
+                           std::string *advice);
 
 // run_ending.cpp: how the run ended.
 

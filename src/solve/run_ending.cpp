@@ -47,20 +47,37 @@ PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *me
       checkpoint_note.empty() ? std::string() : "; continue with -restart " + run.scene.output_dir;
   const std::string steps_hint =
       (checkpoint_note.empty() ? "; rerun with" : " and") + std::string(" a larger -ts_max_steps");
-  char text[2048] = "";
+  char text[4096] = "";
   *ending = reached ? RunEnding::success : RunEnding::step_limit;
-  if (reason < 0) {
+  std::string linear_failure, linear_advice;
+  PetscInt rejected = 0;
+  PetscCall(TSGetStepRejections(run.ts, &rejected));
+  const int attempts = (int)(rejected - run.last_rejects);
+  if (reason < 0 && describeLinearFailure(run, attempts, t, &linear_failure, &linear_advice)) {
+    // Not the time step's fault: no advice about it (solve_failure.cpp).
     *ending = RunEnding::failed_step;
     std::snprintf(text, sizeof(text),
-                  "step %d failed (%s): %s from t = %g s even after %d cuts of the time step "
+                  "step %d failed (%s): %s. Results up to t = %g s are in %s%s%s. %s", run.step + 1,
+                  TSConvergedReasons[reason], linear_failure.c_str(), t,
+                  run.scene.output_dir.c_str(), checkpoint_note.c_str(),
+                  restart_hint.empty() ? "" : (restart_hint + " and other solver options").c_str(),
+                  linear_advice.c_str());
+  } else if (reason < 0) {
+    *ending = RunEnding::failed_step;
+    const std::string newton =
+        run.failure.step == run.step && run.failure.snes < 0
+            ? std::string(" (") + SNESConvergedReasons[run.failure.snes] + ")"
+            : std::string();
+    std::snprintf(text, sizeof(text),
+                  "step %d failed (%s): %s%s from t = %g s even after %d cuts of the time step "
                   "(last tried dt = %g s). Results up to t = %g s are in %s%s; a smaller -ts_dt, "
                   "more cuts (-ts_max_reject) or other solver options may help",
                   run.step + 1, TSConvergedReasons[reason],
                   run.time.adaptive() ? "its attempts were rejected (Newton did not converge or "
                                         "the error exceeded -ts_rtol)"
                                       : "Newton did not converge",
-                  t, (int)rejects, run.attempted_dt, t, run.scene.output_dir.c_str(),
-                  checkpoint_note.c_str());
+                  newton.c_str(), t, (int)rejects, run.attempted_dt, t,
+                  run.scene.output_dir.c_str(), checkpoint_note.c_str());
   } else if (run.stop_signal) {
     *ending = RunEnding::signal;
     std::snprintf(text, sizeof(text),

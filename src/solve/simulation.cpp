@@ -373,7 +373,11 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   long unknowns = 0;
   for (const auto &f : fields)
     unknowns += f.second;
-  PetscCall(applySolverPreset(comm, run.scene.dim, unknowns));
+  {
+    std::string solver;
+    PetscCall(applySolverPreset(comm, run.scene.dim, unknowns, &solver));
+    PetscCall(record.setSolver(comm, solver));
+  }
 
   // Initial state and its boundary values.
   PetscCall(DMCreateLocalVector(run.dm, &run.previous));
@@ -408,6 +412,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(TSAdaptSetScaleSolveFailed(adapt, 0.5));
   PetscCall(TSSetPreStep(run.ts, landOnFinalTime));
   PetscCall(TSSetPostStep(run.ts, postStep));
+  PetscCall(TSSetPostStage(run.ts, noteAttempt)); // why an attempt failed (solve_failure.cpp)
   SNES snes;
   PetscCall(TSGetSNES(run.ts, &snes));
   PetscCall(SNESSetType(snes, SNESNEWTONLS));

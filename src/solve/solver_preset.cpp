@@ -88,17 +88,27 @@ std::string solverPresetList()
   return list.empty() ? "(none)" : list;
 }
 
-PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns)
+std::string chosenPreset(const std::string &preset, bool solver_named, int dim, double unknowns,
+                         long threshold)
 {
-  char buffer[256] = "";
+  if (!preset.empty() && preset != "auto") return preset;
+  if (solver_named) return "";
+  return dim == 3 && unknowns > threshold ? "fieldsplit" : "direct";
+}
+
+PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns, std::string *choice)
+{
+  char buffer[256] = "auto";
   PetscBool given;
   PetscInt threshold = 30000;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam solver preset", "docs/scenes.md");
   PetscCall(PetscOptionsString("-solver_preset",
-                               "auto, direct, fieldsplit or <name>: insert "
-                               "options/solvers/<name>.opts (options not set already)",
-                               "docs/scenes.md", "(none)", buffer, sizeof buffer, &given));
+                               "auto (the default), direct, fieldsplit or <name>: insert "
+                               "options/solvers/<name>.opts (options not set already); auto: "
+                               "direct, fieldsplit in 3D above -solver_auto_threshold, none "
+                               "when -ksp_type or -pc_type is given",
+                               "docs/scenes.md", "auto", buffer, sizeof buffer, &given));
   PetscCall(PetscOptionsInt("-solver_auto_threshold",
                             "unknowns above which auto chooses the iterative preset in 3D",
                             "docs/scenes.md", threshold, &threshold, nullptr));
@@ -106,35 +116,45 @@ PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns)
   PetscCheck(threshold >= 0, comm, PETSC_ERR_USER_INPUT,
              "-solver_auto_threshold %" PetscInt_FMT ": expected a number of unknowns >= 0",
              threshold);
-  if (!given) PetscFunctionReturn(0);
-  std::string name = buffer, why;
-  if (name == "auto") {
-    char chosen[64] = "";
-    PetscBool pc_given;
-    PetscCall(
-        PetscOptionsGetString(nullptr, nullptr, "-pc_type", chosen, sizeof chosen, &pc_given));
-    if (pc_given) { // a solver chosen on the command line or by an options file wins
-      PetscCall(PetscPrintf(comm, "solver as given (-pc_type %s)\n", chosen));
-      PetscFunctionReturn(0);
-    }
-    const bool iterative = dim == 3 && unknowns > threshold;
-    name = iterative ? "fieldsplit" : "direct";
-    why = iterative ? " (auto: 3D, " + std::to_string(unknowns) + " unknowns > " +
-                          std::to_string((long)threshold) + ")"
-                    : " (auto: " + std::to_string(dim) + "D, " + std::to_string(unknowns) +
-                          " unknowns; iterative only for 3D above " +
-                          std::to_string((long)threshold) + ", -solver_auto_threshold)";
-  }
-  PetscCheck(validName(name), comm, PETSC_ERR_USER_INPUT,
+  // The solver is the user's own when -ksp_type or -pc_type is set (scene, options file,
+  // command line); then auto, the default, inserts nothing. Any other -ksp_*, -pc_*, -snes_*
+  // option only tunes the preset: it keeps its value (insertUnset).
+  char ksp_type[64] = "", pc_type[64] = "";
+  PetscBool ksp_given, pc_given;
+  PetscCall(
+      PetscOptionsGetString(nullptr, nullptr, "-ksp_type", ksp_type, sizeof ksp_type, &ksp_given));
+  PetscCall(
+      PetscOptionsGetString(nullptr, nullptr, "-pc_type", pc_type, sizeof pc_type, &pc_given));
+  const std::string requested = buffer;
+  PetscCheck(validName(requested), comm, PETSC_ERR_USER_INPUT,
              "-solver_preset %s: expected auto or the name of a file in %s (letters, digits, _ "
              "and -)",
              buffer, POROSEAM_SOLVER_DIR);
+  const std::string name =
+      chosenPreset(requested, ksp_given || pc_given, dim, (double)unknowns, (long)threshold);
+  if (name.empty()) { // a solver chosen by the scene, an options file or the command line
+    std::string own = ksp_given ? std::string("-ksp_type ") + ksp_type : std::string();
+    if (pc_given) own += (own.empty() ? "" : ", ") + std::string("-pc_type ") + pc_type;
+    *choice = "as given (" + own + ")";
+    PetscCall(PetscPrintf(comm, "solver %s\n", choice->c_str()));
+    PetscFunctionReturn(0);
+  }
+  std::string why;
+  if (requested == "auto")
+    why =
+        std::string(given ? " (auto: " : " (auto, the default: ") + std::to_string(dim) + "D, " +
+        std::to_string(unknowns) + " unknowns" +
+        (name == "fieldsplit" ? " > " + std::to_string((long)threshold)
+                              : "; iterative only for 3D above " + std::to_string((long)threshold) +
+                                    ", -solver_auto_threshold") +
+        ")";
   const std::string file = solverPresetFile(name);
   PetscCheck(!file.empty(), comm, PETSC_ERR_USER_INPUT,
              "-solver_preset %s: no preset file %s/%s.opts (the presets: %s)", name.c_str(),
              POROSEAM_SOLVER_DIR, name.c_str(), solverPresetList().c_str());
   PetscCall(insertUnset(comm, file));
-  PetscCall(PetscPrintf(comm, "solver preset %s%s\n", name.c_str(), why.c_str()));
+  *choice = "preset " + name + why;
+  PetscCall(PetscPrintf(comm, "solver %s\n", choice->c_str()));
   PetscFunctionReturn(0);
 }
 
