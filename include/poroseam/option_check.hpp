@@ -27,6 +27,17 @@ struct SceneNames {
 /// "traction", "rigth" 1 from "right".
 std::size_t editDistance(const std::string &a, const std::string &b);
 
+/// The closest of `candidates` to `word`, within a tolerance that grows with the length of
+/// the candidate (one edit up to 5 characters, two up to 12, three beyond), or "".
+std::string closestName(const std::string &word, const std::vector<std::string> &candidates);
+
+/// The scene-wide option names of poroseam (-mesh, -drained, ..., -options_unused_ok).
+std::vector<std::string> sceneOptionNames();
+
+/// Whether `name` (without '-') is one of poroseam's scene options: a scene-wide name or one
+/// of the families -region_*, -bc_*, -interface_*, -probe_* (checked by checkOptionNames).
+bool isSceneOption(const std::string &name);
+
 /// The one-line error for option `name` (without its '-') with value `value`, or "" when
 /// the option is poroseam's and spelt right or is none of poroseam's business (PETSc's own,
 /// or unknown and close to no name of poroseam: those are reported at the end as unused).

@@ -14,6 +14,7 @@
 
 #include <petscsys.h>
 #include <string>
+#include <vector>
 
 namespace poroseam {
 
@@ -23,6 +24,13 @@ std::string solverPresetFile(const std::string &name);
 
 /// The names of the presets, "direct, fieldsplit".
 std::string solverPresetList();
+
+/// Whether `path` names a file of poroseam's solver presets folder (options/solvers/).
+bool isSolverPresetFile(const std::string &path);
+
+/// The names (without '-') of the options the solver presets of options/solvers/ set: PETSc
+/// options poroseam's tested configurations use.
+std::vector<std::string> solverPresetOptionNames();
 
 /// Reads -solver_preset; with a preset, inserts its options (those not set already) and says
 /// which on stdout. `dim` and `unknowns` (global) decide for auto. Call before the solvers

@@ -39,10 +39,17 @@ const char *const kSceneNames[] = {"mesh",
                                    "solver_auto_threshold",
                                    "mass_balance_krylov_test",
                                    "checkpoint_every",
+                                   "checkpoint_rolling",
+                                   "checkpoint_rolling_interval",
+                                   "io_agreement_timeout",
                                    "restart",
                                    "restart_step",
                                    "test_fail_dt_above",
-                                   "test_allow_crank_nicolson"};
+                                   "test_allow_crank_nicolson",
+                                   "test_step_delay",
+                                   "test_step_delay_after",
+                                   "test_io_fail_rank",
+                                   "options_unused_ok"};
 
 /// Options of PETSc's objects start with these: a near miss of a scene name among them is
 /// left to PETSc (reported at the end when nothing reads it).
@@ -293,6 +300,24 @@ std::size_t editDistance(const std::string &a, const std::string &b)
         d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   return d[n][m];
+}
+
+std::string closestName(const std::string &word, const std::vector<std::string> &candidates)
+{
+  return closest(word, candidates);
+}
+
+std::vector<std::string> sceneOptionNames()
+{
+  return std::vector<std::string>(std::begin(kSceneNames), std::end(kSceneNames));
+}
+
+bool isSceneOption(const std::string &name)
+{
+  for (const char *prefix : {"region_", "bc_", "interface_", "probe_"})
+    if (startsWith(name, prefix)) return true;
+  return std::any_of(std::begin(kSceneNames), std::end(kSceneNames),
+                     [&](const char *known) { return name == known; });
 }
 
 std::string misspeltOption(const std::string &name, const std::string &value,
