@@ -17,11 +17,11 @@ struct PetscChoices {
 };
 
 /// The values the choice option `name` (without '-', with or without a solver prefix such as
-/// fieldsplit_displacement_) accepts; false when `name` is no choice option this check knows. Lists come from PETSc's registries (KSPList, PCList,
-/// SNESList, SNESLineSearchList, TSList, MatOrderingList, the solver packages PETSc was built
-/// with) and its enum tables; -pc_hypre_type's from PETSc 3.18's hypre.c (not exported).
-/// Call after the registries are filled (checkPetscChoices does) and after poroseam's own
-/// preconditioners are registered.
+/// fieldsplit_displacement_) accepts; false when `name` is no choice option this check knows. Lists
+/// come from PETSc's registries (KSPList, PCList, SNESList, SNESLineSearchList, TSList,
+/// MatOrderingList, the solver packages PETSc was built with) and its enum tables; -pc_hypre_type's
+/// from PETSc 3.18's hypre.c (not exported). Call after the registries are filled
+/// (checkPetscChoices does) and after poroseam's own preconditioners are registered.
 bool petscChoices(const std::string &name, PetscChoices *choices);
 
 /// Collective (the options are the same on every rank). Every choice option set, with any

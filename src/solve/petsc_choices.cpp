@@ -49,17 +49,15 @@ std::vector<std::string> enumNames(const char *const *table)
 std::vector<std::string> solverPackages()
 {
   // MatSolverType has no list to walk: ask for each package PETSc can be built with.
-  static const char *const known[] = {"petsc",    "mumps",       "superlu",     "superlu_dist",
-                                      "umfpack",  "cholmod",     "klu",         "pastix",
-                                      "strumpack", "mkl_pardiso", "mkl_cpardiso", "cusparse",
-                                      "essl",     "lusol",       "spqr",        "elemental",
-                                      "scalapack", "bas",        "matlab"};
+  static const char *const known[] = {
+      "petsc",  "mumps",     "superlu",     "superlu_dist", "umfpack",  "cholmod", "klu",
+      "pastix", "strumpack", "mkl_pardiso", "mkl_cpardiso", "cusparse", "essl",    "lusol",
+      "spqr",   "elemental", "scalapack",   "bas",          "matlab"};
   std::vector<std::string> found;
   for (const char *type : known)
     for (MatFactorType factor : {MAT_FACTOR_LU, MAT_FACTOR_CHOLESKY, MAT_FACTOR_ILU}) {
       PetscBool has_type = PETSC_FALSE, has_matrix = PETSC_FALSE;
-      if (!MatSolverTypeGet(type, MATSEQAIJ, factor, &has_type, &has_matrix, nullptr) &&
-          has_type) {
+      if (!MatSolverTypeGet(type, MATSEQAIJ, factor, &has_type, &has_matrix, nullptr) && has_type) {
         found.emplace_back(type);
         break;
       }
@@ -78,15 +76,14 @@ bool petscChoices(const std::string &name, PetscChoices *choices)
     const char *base, *what;
     PetscFunctionList *list;
   };
-  const Registry registries[] = {{"ts_type", "time stepping method of PETSc (TSType)", &TSList},
-                                 {"snes_type", "nonlinear solver of PETSc (SNESType)", &SNESList},
-                                 {"snes_linesearch_type",
-                                  "line search of PETSc (SNESLineSearchType)",
-                                  &SNESLineSearchList},
-                                 {"ksp_type", "Krylov method of PETSc (KSPType)", &KSPList},
-                                 {"pc_type", "preconditioner of PETSc or poroseam (PCType)", &PCList},
-                                 {"pc_factor_mat_ordering_type",
-                                  "matrix ordering of PETSc (MatOrderingType)", &MatOrderingList}};
+  const Registry registries[] = {
+      {"ts_type", "time stepping method of PETSc (TSType)", &TSList},
+      {"snes_type", "nonlinear solver of PETSc (SNESType)", &SNESList},
+      {"snes_linesearch_type", "line search of PETSc (SNESLineSearchType)", &SNESLineSearchList},
+      {"ksp_type", "Krylov method of PETSc (KSPType)", &KSPList},
+      {"pc_type", "preconditioner of PETSc or poroseam (PCType)", &PCList},
+      {"pc_factor_mat_ordering_type", "matrix ordering of PETSc (MatOrderingType)",
+       &MatOrderingList}};
   for (const auto &r : registries)
     if (matches(name, r.base)) {
       *values = registered(*r.list);

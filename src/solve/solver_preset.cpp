@@ -93,7 +93,8 @@ std::vector<std::string> solverPresetOptionNames()
     std::string word;
     for (std::string line; std::getline(in, line);) {
       std::istringstream words(line);
-      if (words >> word && word.size() > 1 && word[0] == '-' && std::isalpha((unsigned char)word[1]))
+      if (words >> word && word.size() > 1 && word[0] == '-' &&
+          std::isalpha((unsigned char)word[1]))
         names.push_back(word.substr(1));
     }
   }

@@ -32,11 +32,31 @@ bool endsWith(const std::string &s, const std::string &suffix)
 bool runtimeOption(const std::string &name)
 {
   static const char *const prefixes[] = {
-      "log",         "malloc",   "options_",   "info",      "on_error",     "no_signal_handler",
-      "fp_trap",     "debugger", "start_in_",  "stop_for_", "history",      "objects_dump",
-      "memory_view", "check_pointer_intensity", "nox",       "saws",         "mpi",
-      "petsc",       "use_gpu_aware_mpi",       "skip_petscrc", "viewer",    "draw",
-      "version",     "help",     "test_"}; // test_: poroseam's test hooks, read where they act
+      "log",
+      "malloc",
+      "options_",
+      "info",
+      "on_error",
+      "no_signal_handler",
+      "fp_trap",
+      "debugger",
+      "start_in_",
+      "stop_for_",
+      "history",
+      "objects_dump",
+      "memory_view",
+      "check_pointer_intensity",
+      "nox",
+      "saws",
+      "mpi",
+      "petsc",
+      "use_gpu_aware_mpi",
+      "skip_petscrc",
+      "viewer",
+      "draw",
+      "version",
+      "help",
+      "test_"}; // test_: poroseam's test hooks, read where they act
   for (const char *p : prefixes)
     if (startsWith(name, p)) return true;
   return false;
@@ -85,8 +105,7 @@ void listSubSolvers(KSP ksp)
 {
   PC pc;
   PetscBool split = PETSC_FALSE;
-  if (KSPGetPC(ksp, &pc) || PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &split) ||
-      !split)
+  if (KSPGetPC(ksp, &pc) || PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &split) || !split)
     return;
   PetscInt n = 0;
   KSP *subs = nullptr;
@@ -156,8 +175,8 @@ PetscErrorCode checkUnused(MPI_Comm comm, UnusedOptionCheck &check, Moment momen
   }
   // Unused only when no rank read it: every rank then reaches the same verdict.
   if (!unused.empty())
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, unused.data(), (int)unused.size(), MPI_INT, MPI_LAND,
-                               comm));
+    PetscCallMPI(
+        MPI_Allreduce(MPI_IN_PLACE, unused.data(), (int)unused.size(), MPI_INT, MPI_LAND, comm));
   std::vector<std::string> found;
   for (std::size_t i = 0; i < unused.size(); ++i)
     if (unused[i] && !check.warned.count(check.typed[i])) {
