@@ -53,10 +53,4 @@ PetscErrorCode allOptions(std::vector<std::pair<std::string, std::string>> &out)
 /// mesh is read) it checks the scene-wide names only (-mseh, -gravty).
 PetscErrorCode checkOptionNames(MPI_Comm comm, const SceneNames &names);
 
-/// At the end of a run: every option nothing read, one warning line each (PETSc's options,
-/// solver-split options of fields the scene does not have, scene options that do not apply
-/// in this configuration, such as -interface_<i>_D0 without _flow). -options_left, which
-/// PETSc reads only as it finishes, is not one of them.
-PetscErrorCode reportUnusedOptions(MPI_Comm comm);
-
 } // namespace poroseam

@@ -44,4 +44,11 @@ PetscErrorCode readUnusedOptionsOk(MPI_Comm comm, UnusedOptionCheck *check);
 /// the time stepper.
 PetscErrorCode checkUnusedOptionsAfterSetUp(MPI_Comm comm, UnusedOptionCheck *check);
 
+/// At the end of a run: every option nothing read, one warning line each (the solver preset's
+/// options for a split the scene does not have; the options left to the end above; scene
+/// options that do not apply in this configuration, such as -interface_<i>_D0 without _flow;
+/// with -options_unused_ok, those warned about at set-up or the first solve, again).
+/// -options_left, which PETSc reads only as it finishes, is not one of them.
+PetscErrorCode reportUnusedOptions(MPI_Comm comm);
+
 } // namespace poroseam

@@ -388,20 +388,4 @@ PetscErrorCode checkOptionNames(MPI_Comm comm, const SceneNames &names)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode reportUnusedOptions(MPI_Comm comm)
-{
-  PetscInt n;
-  char **names, **values;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
-  for (PetscInt i = 0; i < n; ++i) {
-    // PETSc reads -options_left in PetscFinalize, after this report: it is used, just later.
-    if (std::string(names[i]) == "options_left") continue;
-    PetscCall(PetscPrintf(comm, "poroseam: warning: option -%s%s%s was given but never used\n",
-                          names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
-  }
-  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
-  PetscFunctionReturn(0);
-}
-
 } // namespace poroseam
