@@ -40,7 +40,8 @@ bool isSceneOption(const std::string &name);
 
 /// The one-line error for option `name` (without its '-') with value `value`, or "" when
 /// the option is poroseam's and spelt right or is none of poroseam's business (PETSc's own,
-/// or unknown and close to no name of poroseam: those are reported at the end as unused).
+/// or unknown and close to no name of poroseam: those are left to the check of options nothing
+/// reads, unused_options.hpp).
 /// `given` holds the names of every option set (for -bc_<b>_<q>_ramp without -bc_<b>_<q>).
 std::string misspeltOption(const std::string &name, const std::string &value,
                            const SceneNames &names, const std::set<std::string> &given);

@@ -52,7 +52,7 @@ const char *const kSceneNames[] = {"mesh",
                                    "options_unused_ok"};
 
 /// Options of PETSc's objects start with these: a near miss of a scene name among them is
-/// left to PETSc (reported at the end when nothing reads it).
+/// left to PETSc and to the check of options nothing reads (unused_options.hpp).
 const char *const kPetscPrefixes[] = {"ts_",         "snes_",  "ksp_",   "pc_",     "mat_", "vec_",
                                       "dm_",         "log_",   "malloc", "options", "mg_",  "sub_",
                                       "petsc",       "viewer", "draw",   "is_",     "sf_",  "tao_",

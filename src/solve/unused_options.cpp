@@ -166,9 +166,11 @@ PetscErrorCode checkUnused(MPI_Comm comm, UnusedOptionCheck &check, Moment momen
   PetscFunctionBeginUser;
   for (std::size_t i = 0; i < check.typed.size(); ++i) {
     const std::string &name = check.typed[i];
-    if (isSceneOption(name) || runtimeOption(name) || readLate(name)) continue;
+    // -options_unsued_ok: the opt-out misspelt, among PETSc's runtime names; read at set-up.
+    const bool opt_out = !closestName(name, {"options_unused_ok"}).empty();
+    if (isSceneOption(name) || (runtimeOption(name) && !opt_out) || readLate(name)) continue;
     if (std::find(preset_names.begin(), preset_names.end(), name) != preset_names.end()) continue;
-    if (moment == Moment::set_up && !readAtSetUp(name)) continue;
+    if (moment == Moment::set_up && !readAtSetUp(name) && !opt_out) continue;
     PetscBool used = PETSC_FALSE;
     PetscCall(PetscOptionsUsed(nullptr, name.c_str(), &used));
     unused[i] = !used;

@@ -60,6 +60,10 @@ CASES = {
     "unused_ok": dict(args=["-ts_dtt", "0.1", "-options_unused_ok"], ok=[
         "warning: option -ts_dtt: no such option in this run (did you mean -ts_dt?); running on",
         "poroseam: 2 steps"]),
+    # the opt-out misspelt is no opt-out
+    "unused_ok_misspelt": dict(args=["-ts_dtt", "0.1", "-options_unsued_ok"], stop=[
+        "option -ts_dtt: no such option in this run (did you mean -ts_dt?)",
+        "option -options_unsued_ok: no such option in this run (did you mean -options_unused_ok?)"]),
     # the preset's options are not the user's: unused ones (no interface pressure in this
     # scene) are reported at the end only
     "preset_unused_not_typed": dict(args=FIELDSPLIT, ok=["poroseam: 2 steps"]),
@@ -126,7 +130,7 @@ def main():
         if "PETSC ERROR" in text:
             failures.append("PETSc's traceback was printed")
         errors = [l for l in text.splitlines() if "error" in l.lower()]
-        want = 2 if a.case.startswith("two_typos") else 1
+        want = 2 if a.case in ("two_typos", "unused_ok_misspelt") else 1
         if len(errors) != want:
             failures.append(f"{len(errors)} error lines, expected {want}: {errors}")
     for f in failures:
