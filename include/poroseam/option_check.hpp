@@ -27,9 +27,21 @@ struct SceneNames {
 /// "traction", "rigth" 1 from "right".
 std::size_t editDistance(const std::string &a, const std::string &b);
 
+/// The closest of `candidates` to `word`, within a tolerance that grows with the length of
+/// the candidate (one edit up to 5 characters, two up to 12, three beyond), or "".
+std::string closestName(const std::string &word, const std::vector<std::string> &candidates);
+
+/// The scene-wide option names of poroseam (-mesh, -drained, ..., -options_unused_ok).
+std::vector<std::string> sceneOptionNames();
+
+/// Whether `name` (without '-') is one of poroseam's scene options: a scene-wide name or one
+/// of the families -region_*, -bc_*, -interface_*, -probe_* (checked by checkOptionNames).
+bool isSceneOption(const std::string &name);
+
 /// The one-line error for option `name` (without its '-') with value `value`, or "" when
 /// the option is poroseam's and spelt right or is none of poroseam's business (PETSc's own,
-/// or unknown and close to no name of poroseam: those are reported at the end as unused).
+/// or unknown and close to no name of poroseam: those are left to the check of options nothing
+/// reads, unused_options.hpp).
 /// `given` holds the names of every option set (for -bc_<b>_<q>_ramp without -bc_<b>_<q>).
 std::string misspeltOption(const std::string &name, const std::string &value,
                            const SceneNames &names, const std::set<std::string> &given);
@@ -41,11 +53,5 @@ PetscErrorCode allOptions(std::vector<std::pair<std::string, std::string>> &out)
 /// misspeltOption's message at the first option it refuses. With `names` empty (before the
 /// mesh is read) it checks the scene-wide names only (-mseh, -gravty).
 PetscErrorCode checkOptionNames(MPI_Comm comm, const SceneNames &names);
-
-/// At the end of a run: every option nothing read, one warning line each (PETSc's options,
-/// solver-split options of fields the scene does not have, scene options that do not apply
-/// in this configuration, such as -interface_<i>_D0 without _flow). -options_left, which
-/// PETSc reads only as it finishes, is not one of them.
-PetscErrorCode reportUnusedOptions(MPI_Comm comm);
 
 } // namespace poroseam

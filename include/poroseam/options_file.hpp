@@ -30,6 +30,7 @@ struct GivenOption {
   std::string value;      ///< the value (a path from a file resolved), "" when none
   bool has_value = false; ///< "-drained" alone has none
   std::string where;      ///< "on the command line", "on line 3 of 'scene.opts'"
+  bool preset = false;    ///< from a solver preset's file (options/solvers/), not typed
 };
 
 /// The command line as PETSc is to see it.

@@ -17,6 +17,7 @@
 
 #include <petscsys.h>
 #include <string>
+#include <vector>
 
 namespace poroseam {
 
@@ -26,6 +27,13 @@ std::string solverPresetFile(const std::string &name);
 
 /// The names of the presets, "direct, fieldsplit".
 std::string solverPresetList();
+
+/// Whether `path` names a file of poroseam's solver presets folder (options/solvers/).
+bool isSolverPresetFile(const std::string &path);
+
+/// The names (without '-') of the options the solver presets of options/solvers/ set: PETSc
+/// options poroseam's tested configurations use.
+std::vector<std::string> solverPresetOptionNames();
 
 /// The preset -solver_preset takes: `preset` as given ("" when not given: auto), or for auto
 /// "" when a solver is named (-ksp_type or -pc_type given), else "direct" or "fieldsplit" by

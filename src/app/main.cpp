@@ -88,10 +88,13 @@ PetscErrorCode reportError(MPI_Comm comm, int line, const char *func, const char
 
 /// The command line PETSc is to see, the same on every rank: rank 0 reads the options files
 /// (options_file.hpp) and checks every option as given (given_options.hpp), as PETSc reads
-/// options files on rank 0 and broadcasts them. Returns "" or the one-line error.
-std::string readCommandLine(int argc, char **argv, std::vector<std::string> *args)
+/// options files on rank 0 and broadcasts them. `typed`: the names (without '-') of the
+/// options the user typed, not those of a solver preset's file (unused_options.hpp). Returns
+/// "" or the one-line error.
+std::string readCommandLine(int argc, char **argv, std::vector<std::string> *args,
+                            std::vector<std::string> *typed)
 {
-  std::string error, packed;
+  std::string error, packed, typed_names;
   if (worldRank() == 0) {
     poroseam::ExpandedCommandLine expanded;
     error = poroseam::expandOptionsFiles(argc, argv, std::getenv("PETSC_OPTIONS"), &expanded);
@@ -99,8 +102,10 @@ std::string readCommandLine(int argc, char **argv, std::vector<std::string> *arg
     // Arguments are C strings: a NUL separates them.
     for (const auto &a : expanded.args)
       packed += a + '\0';
+    for (const auto &o : expanded.options)
+      if (!o.preset) typed_names += o.name.substr(o.name.find_first_not_of('-')) + '\0';
   }
-  for (std::string *text : {&error, &packed}) {
+  for (std::string *text : {&error, &packed, &typed_names}) {
     unsigned long size = text->size();
     MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, MPI_COMM_WORLD);
     text->resize(size);
@@ -112,6 +117,12 @@ std::string readCommandLine(int argc, char **argv, std::vector<std::string> *arg
   for (std::size_t start = 0; start < packed.size();) {
     const std::size_t end = packed.find('\0', start);
     args->push_back(packed.substr(start, end - start));
+    start = end + 1;
+  }
+  typed->clear();
+  for (std::size_t start = 0; start < typed_names.size();) {
+    const std::size_t end = typed_names.find('\0', start);
+    typed->push_back(typed_names.substr(start, end - start));
     start = end + 1;
   }
   return error;
@@ -167,7 +178,8 @@ int main(int argc, char **argv)
   setenv("OMPI_MCA_sharedfp", "^lockedfile", 0);
   MPI_Init(&argc, &argv);
   std::vector<std::string> args; // PETSc keeps pointers into these until PetscFinalize
-  const std::string options_error = readCommandLine(argc, argv, &args);
+  std::vector<std::string> typed;
+  const std::string options_error = readCommandLine(argc, argv, &args, &typed);
   if (!options_error.empty()) {
     if (worldRank() == 0) std::fprintf(stderr, "poroseam: error: %s\n", options_error.c_str());
     MPI_Finalize();
@@ -200,7 +212,7 @@ int main(int argc, char **argv)
     error = poroseam::checkNumericOptions(PETSC_COMM_WORLD);
     if (!error && !help_requested) error = poroseam::checkOutputDirectory(PETSC_COMM_WORLD);
     if (!error && !help_requested) error = lock.acquire(PETSC_COMM_WORLD);
-    if (!error) error = poroseam::runSimulation(PETSC_COMM_WORLD);
+    if (!error) error = poroseam::runSimulation(PETSC_COMM_WORLD, typed);
   }
   const bool collective =
       error == PETSC_ERR_USER_INPUT || error == PETSC_ERR_NOT_CONVERGED || collective_input_error;

@@ -39,13 +39,20 @@ const char *const kSceneNames[] = {"mesh",
                                    "solver_auto_threshold",
                                    "mass_balance_krylov_test",
                                    "checkpoint_every",
+                                   "checkpoint_rolling",
+                                   "checkpoint_rolling_interval",
+                                   "io_agreement_timeout",
                                    "restart",
                                    "restart_step",
                                    "test_fail_dt_above",
-                                   "test_allow_crank_nicolson"};
+                                   "test_allow_crank_nicolson",
+                                   "test_step_delay",
+                                   "test_step_delay_after",
+                                   "test_io_fail_rank",
+                                   "options_unused_ok"};
 
 /// Options of PETSc's objects start with these: a near miss of a scene name among them is
-/// left to PETSc (reported at the end when nothing reads it).
+/// left to PETSc and to the check of options nothing reads (unused_options.hpp).
 const char *const kPetscPrefixes[] = {"ts_",         "snes_",  "ksp_",   "pc_",     "mat_", "vec_",
                                       "dm_",         "log_",   "malloc", "options", "mg_",  "sub_",
                                       "petsc",       "viewer", "draw",   "is_",     "sf_",  "tao_",
@@ -295,6 +302,24 @@ std::size_t editDistance(const std::string &a, const std::string &b)
   return d[n][m];
 }
 
+std::string closestName(const std::string &word, const std::vector<std::string> &candidates)
+{
+  return closest(word, candidates);
+}
+
+std::vector<std::string> sceneOptionNames()
+{
+  return std::vector<std::string>(std::begin(kSceneNames), std::end(kSceneNames));
+}
+
+bool isSceneOption(const std::string &name)
+{
+  for (const char *prefix : {"region_", "bc_", "interface_", "probe_"})
+    if (startsWith(name, prefix)) return true;
+  return std::any_of(std::begin(kSceneNames), std::end(kSceneNames),
+                     [&](const char *known) { return name == known; });
+}
+
 std::string misspeltOption(const std::string &name, const std::string &value,
                            const SceneNames &names, const std::set<std::string> &given)
 {
@@ -360,22 +385,6 @@ PetscErrorCode checkOptionNames(MPI_Comm comm, const SceneNames &names)
     const std::string message = misspeltOption(name, value, names, given);
     PetscCheck(message.empty(), comm, PETSC_ERR_USER_INPUT, "%s", message.c_str());
   }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode reportUnusedOptions(MPI_Comm comm)
-{
-  PetscInt n;
-  char **names, **values;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
-  for (PetscInt i = 0; i < n; ++i) {
-    // PETSc reads -options_left in PetscFinalize, after this report: it is used, just later.
-    if (std::string(names[i]) == "options_left") continue;
-    PetscCall(PetscPrintf(comm, "poroseam: warning: option -%s%s%s was given but never used\n",
-                          names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
-  }
-  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscFunctionReturn(0);
 }
 

@@ -250,7 +250,9 @@ private:
       if (has_value && !folder.empty() && isInputPathOption(name))
         value = resolve(value, folder, false);
       const std::string bare = name.substr(name[1] == '-' ? 2 : 1);
-      out_->options.push_back({"-" + prefix_ + bare, value, has_value, where});
+      const bool preset = std::any_of(chain_.begin(), chain_.end(),
+                                      [](const Open &o) { return isSolverPresetFile(o.path); });
+      out_->options.push_back({"-" + prefix_ + bare, value, has_value, where, preset});
     }
     out_->args.push_back(name);
     if (has_value) out_->args.push_back(value);

@@ -13,6 +13,7 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/time_integration.hpp"
 #include "poroseam/time_series.hpp"
+#include "poroseam/unused_options.hpp"
 
 #include "progress_line.hpp"
 #include "rolling_checkpoint.hpp"
@@ -114,6 +115,7 @@ struct Run {
   bool step_abandoned = false;
   double accepted_next_dt = 0.0;
   AttemptFailure failure; ///< why the step in progress failed so far
+  UnusedOptionCheck unused_options; ///< options typed that nothing reads (unused_options.hpp)
 };
 
 inline PetscErrorCode currentDt(Run &run, double *dt)

@@ -17,6 +17,7 @@
 #include "poroseam/nullspace.hpp"
 #include "poroseam/option_check.hpp"
 #include "poroseam/option_listing.hpp"
+#include "poroseam/petsc_choices.hpp"
 #include "poroseam/probes.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/run_options.hpp"
@@ -436,6 +437,8 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
       SNESSetTolerances(snes, PETSC_DEFAULT, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(registerVertexBlocksPC());
   PetscCall(registerSchurSelfpPC());
+  PetscCall(checkPetscChoices(comm)); // -ksp_type gmress: one line, not PETSc's traceback
+  PetscCall(readUnusedOptionsOk(comm, &run.unused_options));
   PetscCall(run.time.beforeOptions(run.ts));
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
@@ -498,6 +501,8 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(TSSetSolution(run.ts, X));
   PetscCall(TSSetUp(run.ts));
   PetscCall(SNESSetUp(snes));
+  run.unused_options.ts = run.ts; // -ts_dtt stops here; -fieldsplit_*_pc_typ at the first solve
+  PetscCall(checkUnusedOptionsAfterSetUp(comm, &run.unused_options));
 
   {
     // Force scale for the convergence test: the residual of the zero state at t = 0, where
@@ -597,12 +602,13 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
 
 } // namespace simulation_detail
 
-PetscErrorCode runSimulation(MPI_Comm comm)
+PetscErrorCode runSimulation(MPI_Comm comm, const std::vector<std::string> &typed_options)
 {
   using namespace simulation_detail;
   Run run;
   RunRecord record;
   PetscFunctionBeginUser;
+  run.unused_options.typed = typed_options;
   const PetscErrorCode error = simulate(comm, run, record);
   // An error anywhere after the record's start still ends it (failed steps, step limits and
   // signals have ended it already, with their summary).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -72,6 +73,32 @@ std::string solverPresetFile(const std::string &name)
   const std::string file = std::string(POROSEAM_SOLVER_DIR) + "/" + name + ".opts";
   struct stat info;
   return stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode) ? file : "";
+}
+
+bool isSolverPresetFile(const std::string &path)
+{
+  std::error_code failed;
+  const auto folder = std::filesystem::weakly_canonical(POROSEAM_SOLVER_DIR, failed);
+  if (failed) return false;
+  return std::filesystem::weakly_canonical(path, failed).parent_path() == folder && !failed;
+}
+
+std::vector<std::string> solverPresetOptionNames()
+{
+  std::vector<std::string> names;
+  std::error_code failed;
+  for (const auto &entry : std::filesystem::directory_iterator(POROSEAM_SOLVER_DIR, failed)) {
+    if (entry.path().extension() != ".opts") continue;
+    std::ifstream in(entry.path());
+    std::string word;
+    for (std::string line; std::getline(in, line);) {
+      std::istringstream words(line);
+      if (words >> word && word.size() > 1 && word[0] == '-' &&
+          std::isalpha((unsigned char)word[1]))
+        names.push_back(word.substr(1));
+    }
+  }
+  return names;
 }
 
 std::string solverPresetList()
