@@ -55,7 +55,7 @@ if args.quads:
         f.write("crossed = 0;\nInclude \"%s\";\n" % os.path.join(common.SOURCE, "meshes",
                                                                   "strip_footing_2d.geo"))
     extra += ["-mesh", wrapper]
-common.run(os.path.join(HERE, "strip_footing.opts"), out, extra, ranks=args.ranks, timeout=600)
+common.run(os.path.join(common.SOURCE, "options", "strip_footing_2d.opts"), out, extra, ranks=args.ranks, timeout=600)
 
 ts = common.read_timeseries(out)
 time = common.column(ts, "time")
