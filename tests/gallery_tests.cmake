@@ -19,9 +19,9 @@ foreach(spec "crack_jacking_2d|0.05" "strip_footing_2d|0.125" "joint_column_2d|1
 endforeach()
 
 # Interfaces in layered ground: the recipe (one interface per layer) against the closed form
-# of uniaxial strain; one interface whose side 1 does not border all of it is refused with the
-# regions named; a sealed interface's advice names the perfect barrier, which then holds.
-foreach(case recipe refused_split refused_layers sealed barrier)
+# of uniaxial strain, and water passing their junction (Poiseuille along the whole fault); one
+# interface whose side 1 does not border all of it is refused with the regions named; a sealed interface's advice names the perfect barrier, which then holds.
+foreach(case recipe refused_split refused_layers junction_flow sealed barrier)
   poroseam_scene_test(gallery.layered_interfaces.${case} "gallery;interface;input"
                       gallery/layered_interfaces.py --case ${case})
 endforeach()

@@ -16,6 +16,13 @@ refused_split   the same fault as ONE interface (both face groups) with side 1 l
                 the way out (one interface per layer).
 refused_layers  the same with one region per layer on both sides of the fault (split_sides = 0):
                 the message names 'upper' (on both sides).
+junction_flow   the recipe's two interfaces with flow (D0 = 1e-4 m, impervious sides T1 = T2 = 0,
+                porous layers): p3 prescribed at the bottom (P = 10 kPa) and the top (0). The
+                water passes the junction: the steady flow along the whole fault is
+                Poiseuille's Q = D0^3 / (12 mu_w) P / L (L = 1 m) out of the top, into the bottom
+                and through both interfaces alike, and p3 is linear along the fault (its
+                force on each interface is the mean p3 times the length: P (1 - 0.2) 0.4 and
+                P (1 - 0.7) 0.6). Exact on any mesh (the gap is uniform): tolerance 1e-6.
 sealed          options/joint_column_2d.opts with T1 = T2 = 0 and no p3: refused, and the advice
                 names -interface_joint_flow 0 as the perfect barrier.
 barrier         the advice followed: -interface_joint_flow 0 (with T1 = T2 = 0 still given) runs,
@@ -80,7 +87,8 @@ def one_interface_scene(out, split_sides):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--case", required=True,
-                    choices=["recipe", "refused_split", "refused_layers", "sealed", "barrier"])
+                    choices=["recipe", "refused_split", "refused_layers", "junction_flow", "sealed",
+                             "barrier"])
     a = ap.parse_args()
     out = common.output_dir("layered_interfaces_" + a.case)
     chk = common.Checks("layered interfaces: " + a.case)
@@ -94,6 +102,32 @@ def main():
             print(f"  {name}: Fx = {fx:.6g} N/m (closed form {expected:.6g}), Fy = {fy:.3g}")
             chk.check(f"{name}: |Fx - (-q nu/(1-nu) h)| / |expected|", abs(fx - expected) / abs(expected), 2e-4)
             chk.check(f"{name}: |Fy| / |expected Fx|", abs(fy) / abs(expected), 2e-4)
+    elif a.case == "junction_flow":
+        P, L, D0 = 1e4, 1.0, 1e-4
+        scene = os.path.join(out, "faulted_layers_flow.opts")
+        with open(SCENE) as f:
+            text = f.read().replace("_material elastic", "_material biot")
+        text = text.replace("-mesh ../../meshes/", "-mesh " + os.path.join(common.SOURCE, "meshes") + "/")
+        for r in ("lower_west", "lower_east", "upper_west", "upper_east"):
+            text += f"-region_{r}_permeability 1e-12\n"
+        for i in LENGTH:
+            text += f"-interface_{i}_flow\n-interface_{i}_D0 {D0}\n-interface_{i}_T1 0\n-interface_{i}_T2 0\n"
+        text += f"-bc_bottom_p3 {P}\n-bc_top_p3 0\n-bc_top_p 0\n-ts_max_time 5\n-ts_max_steps 20\n"
+        with open(scene, "w") as f:
+            f.write(text)
+        common.run(scene, out)
+        ts = common.read_timeseries(out)
+        q = D0 ** 3 / (12 * 1e-3) * P / L
+        print(f"  Poiseuille Q = {q:.6g} m2/s")
+        for col, sign in (("top.interface_outflow", 1), ("bottom.interface_outflow", -1),
+                          ("fault_upper.outflow", 1), ("fault_lower.outflow", -1)):
+            v = common.column(ts, col)[-1]
+            print(f"  {col} = {v:.6g}")
+            chk.check(f"{col} = {'+' if sign > 0 else '-'}Q: relative error", abs(v - sign * q) / q, 1e-6)
+        for name, mean in (("fault_lower", P * (1 - 0.2)), ("fault_upper", P * (1 - 0.7))):
+            v = common.column(ts, f"{name}.p3_force")[-1]
+            chk.check(f"{name}.p3_force = mean p3 x length: relative error",
+                      abs(v - mean * LENGTH[name]) / (mean * LENGTH[name]), 1e-6)
     elif a.case in ("refused_split", "refused_layers"):
         split = a.case == "refused_split"
         rc, text = refused(out, one_interface_scene(out, split), [])
