@@ -7,7 +7,7 @@ poroseam_scene_test(gallery.listed "gallery;docs" gallery/gallery_listed.py)
 
 # The scenes promoted from tests/ to options/ run as given (a few steps each, a few seconds):
 # run from the build folder, so that the mesh is found relative to the scene file.
-foreach(spec "crack_jacking_2d|0.05" "strip_footing_2d|0.125" "joint_column_2d|1")
+foreach(spec "crack_jacking_2d|0.05" "strip_footing_2d|0.0625" "joint_column_2d|1")
   string(REPLACE "|" ";" parts "${spec}")
   list(GET parts 0 scene)
   list(GET parts 1 until)
