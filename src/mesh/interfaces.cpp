@@ -322,10 +322,10 @@ PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
       centroid(fx, (int)dim, where);
       std::ostringstream msg;
       msg << "interface '" << in.name << "': its side 1 (-interface_" << in.name << "_side1 "
-          << in.side1 << ") does not border its face group '"
-          << in.surfaces[found->second.second] << "' near (" << where[0] << ", " << where[1]
-          << ", " << where[2] << "), which lies between " << regionName(region[0]) << " and "
-          << regionName(region[1]) << ". Side 1 is one region that borders every face of the "
+          << in.side1 << ") does not border its face group '" << in.surfaces[found->second.second]
+          << "' near (" << where[0] << ", " << where[1] << ", " << where[2]
+          << "), which lies between " << regionName(region[0]) << " and " << regionName(region[1])
+          << ". Side 1 is one region that borders every face of the "
           << "interface: where a fault crosses layers, give it one interface per layer (one face "
           << "group each, meeting end to end), each with a region of its own layer as side 1 "
           << "(docs/interface_parameters.md, \"Interfaces in layered ground\")";
