@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """docs/gallery.md against the scenes (issue 24, item 3): every scene of options/*.opts and
 every example of examples/*/ has an entry in the gallery, naming its scene file, its picture
-and the command that runs it; every picture the page shows exists in docs/ and is a PNG; no
-entry names a scene that is gone. Fails with the list of what is missing.
+and the command that runs it, and a row in the table of scripts/make_gallery (which makes the
+picture); every picture the page shows exists in docs/ and is a PNG; no entry names a scene
+that is gone. Fails with the list of what is missing.
 """
 import glob
 import os
@@ -41,6 +42,12 @@ def main():
             problems.append(f"{scene}: its entry shows no picture gallery/{name}.png")
         if not re.search(r"(scripts/run|poroseam)\b[^\n]*" + re.escape(os.path.basename(scene)[:-5]), body):
             problems.append(f"{scene}: its entry has no command that runs it")
+    with open(os.path.join(SOURCE, "scripts", "make_gallery")) as f:
+        rows = dict(re.findall(r'^\s*"([A-Za-z0-9_]+)\|([^|]+)\|', f.read(), re.M))
+    for scene in scenes:
+        name = os.path.splitext(os.path.basename(scene))[0]
+        if rows.get(name) != scene:
+            problems.append(f"{scene}: no row '{name}|{scene}|...' in the table of scripts/make_gallery")
     known = {os.path.splitext(os.path.basename(s))[0] for s in scenes}
     for name in entries:
         if name not in known:
