@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace poroseam {
@@ -309,10 +310,25 @@ PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
     }
     int sideFace = region[0] == in.side1_tag ? 0 : region[1] == in.side1_tag ? 1 : -1;
     if (sideFace < 0) {
+      auto regionName = [&](PetscInt tag) -> std::string {
+        if (tag < 0) return "no region";
+        const int r = scene.regionIndexOfTag((int)tag);
+        return r >= 0 ? "'" + scene.regions[r].name + "'"
+                      : "cells of tag " + std::to_string(tag) + " (not in -regions)";
+      };
+      std::vector<double> fx;
+      PetscCall(closureCoordinates(*dm, cone[0], fx));
+      double where[3];
+      centroid(fx, (int)dim, where);
       std::ostringstream msg;
-      msg << "interface '" << in.name << "': -interface_" << in.name << "_side1 " << in.side1
-          << " is on neither side of its face group '" << in.surfaces[found->second.second]
-          << "' (the regions there have tags " << region[0] << " and " << region[1] << ")";
+      msg << "interface '" << in.name << "': its side 1 (-interface_" << in.name << "_side1 "
+          << in.side1 << ") does not border its face group '" << in.surfaces[found->second.second]
+          << "' near (" << where[0] << ", " << where[1] << ", " << where[2]
+          << "), which lies between " << regionName(region[0]) << " and " << regionName(region[1])
+          << ". Side 1 is one region that borders every face of the "
+          << "interface: where a fault crosses layers, give it one interface per layer (one face "
+          << "group each, meeting end to end), each with a region of its own layer as side 1 "
+          << "(docs/interface_parameters.md, \"Interfaces in layered ground\")";
       error = msg.str();
       break;
     }

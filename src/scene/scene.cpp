@@ -512,8 +512,11 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
     PetscCheck(!i.flow || i.transmissivity1 > 0.0 || i.transmissivity2 > 0.0 || p3_prescribed, comm,
                PETSC_ERR_USER_INPUT,
                "interface '%s' is sealed (-interface_%s_T1 0 and _T2 0) and no -bc_<b>_p3 is "
-               "given: its water pressure is undetermined. Give T1 or T2 > 0, or prescribe p3 "
-               "where it meets a boundary, or drop -interface_%s_flow",
+               "given: its water pressure is undetermined. For a perfect barrier (no water "
+               "along it or across it) give -interface_%s_flow 0 (no interface pressure at "
+               "all); to keep the flow along it, give T1 or T2 > 0, or, if it ends on a "
+               "boundary b of the mesh, prescribe its pressure there with -bc_<b>_p3 (an "
+               "interface that ends inside the mesh has no such end)",
                i.name.c_str(), i.name.c_str(), i.name.c_str());
 
   PetscCall(warnStabilization(comm, scene));

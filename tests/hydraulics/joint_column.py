@@ -3,7 +3,7 @@
     joint_column.py --case series|terzaghi|one_sided|sealed|sealed_petsc_lu [--ranks N]
     joint_column.py --case series|terzaghi --mpi-match [--ranks 2]
 
-Scene tests/hydraulics/joint_column_2d.opts: column W = 0.1 m x 1 m, layers lower [0, 0.5]
+Scene options/joint_column_2d.opts: column W = 0.1 m x 1 m, layers lower [0, 0.5]
 and upper [0.5, 1] (Terzaghi material: M_c = 1.2e7 Pa, k/mu_w = 1e-9 m2/(Pa s)), joint at
 y = 0.5 with side 1 = lower (e1 points up), D0 = 1e-5 m. Per unit area, with k' = k/mu_w:
 
@@ -50,7 +50,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hydraulics_common import common, analytic as A, scene, interface_points, point_field  # noqa: E402
 
-SCENE = scene("joint_column_2d.opts")
+SCENE = os.path.join(common.SOURCE, "options", "joint_column_2d.opts")
 W, H1, H2 = 0.1, 0.5, 0.5
 MU_W = 1e-3
 E, NU, K = 1e7, 0.25, 1e-12

@@ -2,7 +2,7 @@
 
     mass_balance.py --case consolidation|opening [--ranks N]
 
-Scene tests/hydraulics/joint_column_2d.opts (column W = 0.1 m x 1 m, joint at mid height,
+Scene options/joint_column_2d.opts (column W = 0.1 m x 1 m, joint at mid height,
 T1 = T2 = 1e-9 m/(Pa s), comparable to the soil's H/k' = 5e8 per layer, so the joint matters).
 Incompressible constituents (alpha = 1, 1/M = 0): the water gained by the bulk is its volume
 change, which the divergence theorem gives from boundary displacements only:
@@ -67,7 +67,7 @@ def main():
     ap.add_argument("--ranks", type=int, default=1)
     args = ap.parse_args()
     out = common.output_dir(f"hydraulics_mass_balance_{args.case}_np{args.ranks}")
-    common.run(scene("joint_column_2d.opts"), out, CASES[args.case] + ["-output_fields_every", 1],
+    common.run(os.path.join(common.SOURCE, "options", "joint_column_2d.opts"), out, CASES[args.case] + ["-output_fields_every", 1],
                ranks=args.ranks)
     ts = common.read_timeseries(out)
     chk = common.Checks(f"water balance with a joint, {args.case}, {args.ranks} rank(s)")

@@ -35,7 +35,7 @@ EXE = os.environ.get("POROSEAM_EXE", os.path.join(SOURCE, "build", "poroseam"))
 OUTPUT_ROOT = os.environ.get("POROSEAM_TEST_OUTPUT", "/tmp/poroseam-test-output")
 BASE_SCENE = os.path.join(SOURCE, "tests", "verification", "terzaghi_2d.opts")
 # a joint with flow across a 2-layer column (meshes/joint_column_2d.geo): interface cases
-JOINT_SCENE = os.path.join(SOURCE, "tests", "hydraulics", "joint_column_2d.opts")
+JOINT_SCENE = os.path.join(SOURCE, "options", "joint_column_2d.opts")
 TIMEOUT = 60.0        # a run still going after this is a hang
 MAX_SECONDS = 15.0    # "finishes in seconds" (the mesh is meshed by gmsh first)
 # signals as crashes report them (PETSc's "Caught signal number 11", Open MPI's "exited on

@@ -34,7 +34,7 @@ SOURCE = os.environ.get("POROSEAM_SOURCE", os.path.dirname(os.path.dirname(HERE)
 EXE = os.environ.get("POROSEAM_EXE", os.path.join(SOURCE, "build", "poroseam"))
 OUTPUT_ROOT = os.environ.get("POROSEAM_TEST_OUTPUT", "/tmp/poroseam-test-output")
 TERZAGHI = os.path.join(SOURCE, "tests", "verification", "terzaghi_2d.opts")
-JOINT = os.path.join(SOURCE, "tests", "hydraulics", "joint_column_2d.opts")
+JOINT = os.path.join(SOURCE, "options", "joint_column_2d.opts")
 TIMEOUT = 60.0
 MAX_SECONDS = 15.0
 

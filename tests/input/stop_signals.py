@@ -60,7 +60,7 @@ import h5py  # noqa: E402
 import restart as restart_test  # noqa: E402  (session_processes, the file comparison)
 import yaml  # noqa: E402
 
-SCENE = os.path.join(common.SOURCE, "tests", "hydraulics", "joint_column_2d.opts")
+SCENE = os.path.join(common.SOURCE, "options", "joint_column_2d.opts")
 # The run of issue 23 (it ends on the scene's -ts_max_steps 125 at t = 31.25 s, status 1).
 RUN = ["-bc_left_p3", "0", "-ts_dt", "0.25", "-ts_max_time", "50", "-output_fields_every", "0"]
 DETERMINISTIC = ["-pc_type", "redundant", "-redundant_pc_type", "lu",

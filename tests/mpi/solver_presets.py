@@ -56,11 +56,11 @@ CASES = {
     # the Krylov norm is the residual as assembled and poroseam's mass-balance check of each
     # solve (include/poroseam/mass_balance_test.hpp) is what keeps the impervious bottom tight:
     # without it (-mass_balance_krylov_test 0) the bottom flux was 1.7e-6 off here (> 1e-6).
-    "joint_column_2d": dict(scene="tests/hydraulics/joint_column_2d.opts",
+    "joint_column_2d": dict(scene="options/joint_column_2d.opts",
                             args=["-ts_max_time", "4", "-probe_low", "0.05,0.25", "-probe_high", "0.05,0.75", "-output_fields_every", "10"],
                             variants={"fieldsplit_unscaled": ("fieldsplit", UNSCALED)}),
     # the joint with caisson-like interface values (K_N = 1e10 Pa/m, T = 1e-8 m/(Pa s))
-    "joint_realistic_2d": dict(scene="tests/hydraulics/joint_column_2d.opts",
+    "joint_realistic_2d": dict(scene="options/joint_column_2d.opts",
                                args=["-ts_max_time", "4", "-interface_joint_KN", "1e10",
                                      "-interface_joint_KT", "1e10", "-interface_joint_T1", "1e-8",
                                      "-interface_joint_T2", "1e-8", "-probe_low", "0.05,0.25",

@@ -63,7 +63,7 @@ import h5py  # noqa: E402
 
 TERZAGHI = os.path.join(common.SOURCE, "options", "terzaghi_2d.opts")
 TWO_REGIONS = os.path.join(common.SOURCE, "options", "two_regions_2d.opts")
-JOINT = os.path.join(common.SOURCE, "tests", "hydraulics", "joint_column_2d.opts")
+JOINT = os.path.join(common.SOURCE, "options", "joint_column_2d.opts")
 WIDTH = 0.1  # the Terzaghi column's width [m]
 DETERMINISTIC = ["-pc_type", "redundant", "-redundant_pc_type", "lu",
                  "-redundant_pc_factor_mat_solver_type", "petsc"]

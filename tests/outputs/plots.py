@@ -6,7 +6,7 @@
 drained: the drained axisymmetric caisson (3 steps) has probes but no pore pressure (every
   probe's pressure is NaN) and no flow: no probes_pressure.png and no boundary_flux.png may be
   written, and every written figure has a curve on every axes.
-interface_flow: crack jacking (tests/hydraulics/crack_jacking_2d.opts, 20 steps): the crack's
+interface_flow: crack jacking (options/crack_jacking_2d.opts, 20 steps): the crack's
   flow columns are drawn (interfaces_flow.png with flux1, flux2 and the storage rate, the
   stored water and the p3 force), again with no empty axes.
 The expected files follow from the run's own timeseries.csv (which columns hold finite,
@@ -30,7 +30,7 @@ OUTPUT_ROOT = os.environ.get("POROSEAM_TEST_OUTPUT", "/tmp/poroseam-test-output"
 CASES = {
     "drained": dict(scene="options/caisson_axisym_drained.opts", args=["-ts_max_steps", "3"],
                     absent=["probes_pressure.png", "boundary_flux.png", "interfaces_flow.png"]),
-    "interface_flow": dict(scene="tests/hydraulics/crack_jacking_2d.opts",
+    "interface_flow": dict(scene="options/crack_jacking_2d.opts",
                            args=["-ts_max_time", "0.2"], present=["interfaces_flow.png"]),
 }
 

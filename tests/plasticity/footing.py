@@ -90,7 +90,7 @@ if args.quads or args.triangles or grid:
             f.write("g = %r;\n" % args.growth)
         f.write("Include \"%s\";\n" % os.path.join(common.SOURCE, "meshes", "strip_footing_2d.geo"))
     extra += ["-mesh", wrapper]
-common.run(os.path.join(HERE, "strip_footing.opts"), out, extra, ranks=args.ranks, timeout=600)
+common.run(os.path.join(common.SOURCE, "options", "strip_footing_2d.opts"), out, extra, ranks=args.ranks, timeout=600)
 
 ts = common.read_timeseries(out)
 time = common.column(ts, "time")

@@ -35,11 +35,11 @@ Cases:
                          -mesh_size_factor 2, the whole pull (4.8 mm in 288 s, 48 steps):
                          vertical equilibrium of the caisson (lid-top reaction minus interface
                          force stays at its step-1 value, the weight, to 1e-6 of the pull).
-  crack_jacking          tests/hydraulics/crack_jacking_2d.opts: a closed buried crack in porous
+  crack_jacking          options/crack_jacking_2d.opts: a closed buried crack in porous
                          rock opened by the water pressure it receives, dt = 0.002 s to 0.8 s
                          (400 steps): the crack must open (its stored water, the integral of
                          h, grows beyond D0 x length by 10 %).
-  joint_stall            tests/hydraulics/joint_column_2d.opts with T1 = T2 = 2e-9,
+  joint_stall            options/joint_column_2d.opts with T1 = T2 = 2e-9,
                          -mesh_size_factor 0.25, dt = 1/64 s to 1 s: the joint carries almost
                          no effective stress (p3 ~ q, p'_N ~ 0.001-0.03 Pa) while K_T = 1e12,
                          so its friction is decided by slips of 1e-14 m. The joint stays closed
@@ -134,7 +134,7 @@ def caisson(kind):
 
 
 def crack_jacking(out, chk):
-    scene = os.path.join(TESTS, "hydraulics", "crack_jacking_2d.opts")
+    scene = os.path.join(os.path.dirname(TESTS), "options", "crack_jacking_2d.opts")
     extra = ["-ts_dt", 0.002, "-ts_max_time", 0.8, "-ts_max_steps", 1000]
     length, d0 = np.hypot(0.4, 0.2), 1e-5
 
@@ -147,7 +147,7 @@ def crack_jacking(out, chk):
 
 
 def joint_stall(out, chk):
-    scene = os.path.join(TESTS, "hydraulics", "joint_column_2d.opts")
+    scene = os.path.join(os.path.dirname(TESTS), "options", "joint_column_2d.opts")
     extra = ["-interface_joint_T1", 2e-9, "-interface_joint_T2", 2e-9, "-mesh_size_factor", 0.25,
              "-ts_dt", 0.015625, "-ts_max_time", 1.0, "-ts_max_steps", 100]
 
