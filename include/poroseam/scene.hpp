@@ -53,14 +53,18 @@ struct Region {
   bool inGround() const { return ground.value_or(porous()); }
 };
 
-enum class BcKind { displacement, pressure, traction, flux, interface_pressure };
+/// pressure: the pore pressure (-bc_<b>_p); normal_pressure: a load along the faces' inward
+/// normal (-bc_<b>_pressure, t = -P n).
+enum class BcKind { displacement, pressure, traction, flux, interface_pressure, normal_pressure };
 
 struct BoundaryCondition {
   std::string boundary; ///< Gmsh physical name
-  int tag = 0;          ///< value in the "Face Sets" label
+  int tag = 0;          ///< value in the "Face Sets" label ("Vertex Sets" for a point group)
+  int group_dim = 0;    ///< dimension of the boundary's physical group (Boundary::dim)
   BcKind kind = BcKind::displacement;
   int component = 0;         ///< displacement component (0 = x) for kind displacement
   std::vector<double> value; ///< magnitude: 1 entry, or dim entries for a traction
+                             ///< (normal_pressure: P [Pa], positive pushes into the body)
   TimeFunction time = TimeFunction::step();
   std::string option; ///< the option that defined it, for messages
   bool dirichlet() const
@@ -73,6 +77,9 @@ struct BoundaryCondition {
 struct Boundary {
   std::string name;
   int tag = 0;
+  /// Dimension of its physical group: the mesh's dimension - 1 for a face group, 0 for a
+  /// physical point (holds prescribed displacements only: a support, docs/scenes.md).
+  int dim = 0;
 };
 
 /// A zero-thickness interface: one or more Gmsh face groups split into cohesive cells.

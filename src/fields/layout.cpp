@@ -71,7 +71,9 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
   PetscFunctionBeginUser;
   PetscCall(checkElementOrder(PetscObjectComm((PetscObject)dm), scene));
   PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
+  DMLabel vertexSets;
   PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
+  PetscCall(DMGetLabel(dm, "Vertex Sets", &vertexSets)); // physical points (supports)
   PetscCall(DMCreateLabel(dm, kPorousLabel));
   PetscCall(DMGetLabel(dm, kPorousLabel, &porous));
   if (scene.hasPressure() && cellSets) {
@@ -119,7 +121,8 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
     PetscCall(DMCreateLabel(dm, name.c_str()));
     PetscCall(DMGetLabel(dm, name.c_str(), &label));
     IS faces = nullptr;
-    if (faceSets) PetscCall(DMLabelGetStratumIS(faceSets, b.tag, &faces));
+    DMLabel groups = b.dim == scene.dim - 1 ? faceSets : vertexSets;
+    if (groups) PetscCall(DMLabelGetStratumIS(groups, b.tag, &faces));
     if (faces) {
       const PetscInt *idx;
       PetscInt n;

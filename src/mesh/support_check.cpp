@@ -51,12 +51,14 @@ PetscErrorCode checkBodiesSupported(DM dm, const Scene &scene)
     // one direction translates freely along it. (Axisymmetric: the hoop stiffness holds the
     // radial direction, so only the axial one, y, needs a condition.)
     std::vector<std::set<PetscInt>> held(dim);
-    DMLabel faceSets;
+    DMLabel faceSets, vertexSets;
     PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
+    PetscCall(DMGetLabel(dm, "Vertex Sets", &vertexSets)); // physical points (supports)
     for (const auto &bc : scene.conditions) {
-      if (bc.kind != BcKind::displacement || !faceSets || bc.component >= dim) continue;
+      DMLabel groups = bc.group_dim == dim - 1 ? faceSets : vertexSets;
+      if (bc.kind != BcKind::displacement || !groups || bc.component >= dim) continue;
       IS is = nullptr;
-      PetscCall(DMLabelGetStratumIS(faceSets, bc.tag, &is));
+      PetscCall(DMLabelGetStratumIS(groups, bc.tag, &is));
       if (!is) continue;
       const PetscInt *idx;
       PetscInt m;

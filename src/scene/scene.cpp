@@ -74,6 +74,32 @@ PetscErrorCode findPhysical(MPI_Comm comm, const std::vector<PhysicalName> &name
 
 namespace {
 
+/// A name of -boundaries: a face group (dimension dim - 1), else a physical point (dimension
+/// 0, a support: prescribed displacements only). A physical curve of a 3D mesh is refused:
+/// PETSc 3.18's Gmsh reader keeps no label of edges, so its points could not be found.
+PetscErrorCode findBoundaryGroup(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
+                                 const std::string &name, Boundary *b)
+{
+  PetscFunctionBeginUser;
+  for (int d : {dim - 1, 0})
+    for (const auto &n : names)
+      if (n.dim == d && n.name == name) {
+        b->tag = n.tag;
+        b->dim = d;
+        PetscFunctionReturn(0);
+      }
+  for (const auto &n : names)
+    PetscCheck(!(n.name == name && n.dim == 1 && dim == 3), comm, PETSC_ERR_USER_INPUT,
+               "-boundaries: '%s' is a physical curve (dimension 1) of the 3D mesh: a condition "
+               "needs a face group (dimension 2) or a physical point (dimension 0); to hold a "
+               "line, fix physical points on it, or a face group that contains it",
+               name.c_str());
+  SETERRQ(comm, PETSC_ERR_USER_INPUT,
+          "-boundaries: boundary '%s' is not a physical group of dimension %d in the mesh, "
+          "nor a physical point; the mesh has: %s (physical points: %s)",
+          name.c_str(), dim - 1, joinNames(names, dim - 1).c_str(), joinNames(names, 0).c_str());
+}
+
 /// A condition's time function (-bc_<b>_<q>_ramp or _table), in the boundary's section.
 PetscErrorCode readTimeFunction(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
                                 const std::string &option, TimeFunction &f)
@@ -126,6 +152,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
     PetscFunctionBeginUser;
     bc.boundary = b.name;
     bc.tag = b.tag;
+    bc.group_dim = b.dim;
     PetscCall(readTimeFunction(PetscOptionsObject, comm, bc.option, bc.time));
     out.push_back(bc);
     PetscFunctionReturn(0);
@@ -226,6 +253,28 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   {
     double v = 0.0;
     bool set = false;
+    PetscCall(condition("pressure",
+                        "normal pressure P [Pa] on the faces, t = -P n (positive pushes into "
+                        "the body; not the pore pressure, -bc_<b>_p)",
+                        true, &v, &set));
+    if (set) {
+      // Both load the same faces' equilibrium rows: one of them is the load meant.
+      for (const auto &c : out)
+        PetscCheck(!(c.boundary == b.name && c.kind == BcKind::traction), comm,
+                   PETSC_ERR_USER_INPUT,
+                   "%spressure and %straction on the same boundary '%s': give the load as one "
+                   "of them (a pressure is the traction -P n), or split the boundary in the mesh",
+                   p.c_str(), p.c_str(), b.name.c_str());
+      BoundaryCondition bc;
+      bc.kind = BcKind::normal_pressure;
+      bc.value = {v};
+      bc.option = p + "pressure";
+      PetscCall(add(bc));
+    }
+  }
+  {
+    double v = 0.0;
+    bool set = false;
     PetscCall(condition("flux", "outward Darcy flux q.n [m/s] (positive: water leaves)",
                         scene.hasPressure(), &v, &set));
     if (set) {
@@ -247,6 +296,16 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       PetscCall(add(bc));
     }
   }
+  // A physical point is a support: it holds displacements, it takes no load (a load on a
+  // point is a force of infinite pressure, and the displacement beneath it is unbounded).
+  for (const auto &c : out)
+    PetscCheck(!(c.boundary == b.name && b.dim == 0 && scene.dim > 1 &&
+                 c.kind != BcKind::displacement),
+               comm, PETSC_ERR_USER_INPUT,
+               "%s: '%s' is a physical point; a point group carries prescribed displacements "
+               "only (%sux, _uy%s), a support that removes a rigid-body mode; loads, pressures "
+               "and fluxes need a face group",
+               c.option.c_str(), b.name.c_str(), p.c_str(), scene.dim == 3 ? ", _uz" : "");
   PetscFunctionReturn(0);
 }
 
@@ -373,6 +432,7 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   for (const auto &name : names_w) {
     Boundary b;
     b.name = name;
+    b.dim = dim - 1;
     PetscCall(
         findPhysical(comm, names, dim - 1, name, "-water_load_boundaries", "boundary", &b.tag));
     for (const auto &other : scene.water_load_boundaries)
@@ -460,7 +520,7 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   for (const auto &name : boundaries) {
     Boundary b;
     b.name = name;
-    PetscCall(findPhysical(comm, names, dim - 1, name, "-boundaries", "boundary", &b.tag));
+    PetscCall(findBoundaryGroup(comm, names, dim, name, &b));
     scene.boundaries.push_back(b);
   }
   PetscCall(checkOptionNames(comm, SceneNames{dim, regions, boundaries, interfaces, names}));

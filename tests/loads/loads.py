@@ -1,0 +1,179 @@
+#!/usr/bin/python3
+"""Normal pressure (-bc_<b>_pressure) and supports on physical points (docs/scenes.md,
+"Normal pressure", "Physical points: supports"), label `loads`.
+
+    loads.py --case NAME      one case (one ctest each)
+    loads.py --list           the case names
+
+Cases (elastic, E = 1e8 Pa, nu = 0.3, P = 1e5 Pa; the scenes are tests/loads/*.opts):
+  cylinder   Lame's thick cylinder a = 1, b = 2 m, plane strain, quarter annulus, internal
+             pressure. Closed form u_r = (1 + nu) P a^2 / (E (b^2 - a^2)) [(1 - 2 nu) r + b^2/r].
+             At orders 1 and 2, two meshes (h, h/2): the largest vertex error of u_r / u_r(a)
+             below a bound and decreasing at the rate of the element (order 1: 2; order 2: the
+             straight-sided arcs keep it at 2 as well, see the bounds), and the inner
+             boundary's force exactly P a in x and in y (the pressure on a polygon whose ends
+             lie on the axes: its resultant is P times the polygon's projections, a).
+  sphere     Lame's hollow sphere a = 1, b = 2 m (an octant, tetrahedra, coarse), internal
+             pressure: u_r = P a^3 / (E (b^3 - a^3)) [(1 - 2 nu) r + (1 + nu) b^3 / (2 r^2)];
+             orders 1 and 2; inner.Fx equals P times the area of the mesh's polygonal quarter
+             disc on x = 0 (computed from the output vertices) to round-off.
+  slope      a pressure on an inclined face equals the traction vector -P n there, to
+             round-off (time series, largest_series_difference, and the displacement field),
+             orders 1 and 2.
+  table      -bc_inner_pressure_table: each step's displacement field and force are the
+             factor of the table times those of the step load (elastic: linear).
+  floating   a square under pressure on all sides, held by two physical points only (one
+             inside the mesh): uniform compression u = eps x, eps = -P (1 + nu)(1 - 2 nu)/E,
+             exactly (linear fields); the points' reactions vanish (a balanced load). Orders 1
+             and 2, 1 and 2 ranks.
+"""
+
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "verification"))
+import common  # noqa: E402  (runner, time-series reader, run-vs-run comparison)
+
+E, NU, P = 1e8, 0.3, 1e5
+
+
+def scene(name):
+    return os.path.join(HERE, name)
+
+
+def run(case, opts, args, ranks=1):
+    out = common.output_dir(f"loads_{case}")
+    common.run(scene(opts), out, args, ranks=ranks)
+    return out
+
+
+def fields(out, index=-1):
+    t, x, f = common.vertex_fields(out, index)
+    return x, np.asarray(f["displacement"])
+
+
+def cylinder(chk):
+    a, b = 1.0, 2.0
+
+    def exact(r):
+        return (1 + NU) * P * a**2 / (E * (b**2 - a**2)) * ((1 - 2 * NU) * r + b**2 / r)
+
+    # bounds: measured errors with margin (order 1: 1.6e-2, 4.3e-3; order 2: 3.4e-3, 8.6e-4)
+    bounds = {1: 2.5e-2, 2: 5e-3}
+    errs = {}
+    for order in (1, 2):
+        errs[order] = []
+        for factor in (1.0, 0.5):
+            out = run(f"cylinder_o{order}_{factor:g}", "cylinder.opts",
+                      ["-displacement_order", order, "-mesh_size_factor", factor])
+            x, u = fields(out)
+            r = np.hypot(x[:, 0], x[:, 1])
+            ur = (u[:, 0] * x[:, 0] + u[:, 1] * x[:, 1]) / r
+            errs[order].append(np.max(np.abs(ur - exact(r))) / exact(a))
+            ts = common.read_timeseries(out)
+            for c in ("Fx", "Fy"):
+                chk.check(f"order {order}, factor {factor:g}: |inner.{c} - P a| / (P a)",
+                          abs(ts[f"inner.{c}"][-1] - P * a) / (P * a), 1e-9)
+        e = errs[order]
+        rate = np.log2(e[0] / e[1])
+        print(f"  order {order}: max |u_r error| / u_r(a) = {e[0]:.3e} (h), {e[1]:.3e} (h/2); "
+              f"rate {rate:.2f}")
+        chk.check(f"order {order}: error on the finer mesh / u_r(a)", e[1], bounds[order] / 4)
+        chk.check(f"order {order}: error on the coarser mesh / u_r(a)", e[0], bounds[order])
+        chk.check(f"order {order}: observed rate (>= 1.8)", -rate, -1.8)
+    chk.check("order 2 error / order 1 error on the finer mesh (< 0.5)",
+              errs[2][1] / errs[1][1], 0.5)
+
+
+def sphere(chk):
+    a, b = 1.0, 2.0
+
+    def exact(r):
+        return P * a**3 / (E * (b**3 - a**3)) * ((1 - 2 * NU) * r + (1 + NU) * b**3 / (2 * r**2))
+
+    bounds = {1: 0.15, 2: 0.03}  # measured (coarse octant, 570 tetrahedra): see the report
+    for order in (1, 2):
+        out = run(f"sphere_o{order}", "sphere.opts", ["-displacement_order", order])
+        x, u = fields(out)
+        r = np.linalg.norm(x, axis=1)
+        ur = np.sum(u * x, axis=1) / r
+        err = np.max(np.abs(ur - exact(r))) / exact(a)
+        chk.check(f"order {order}: max |u_r error| / u_r(a)", err, bounds[order])
+        # the polygonal quarter disc the mesh's inner surface ends on at x = 0
+        on = (np.abs(x[:, 0]) < 1e-9) & (np.abs(r - a) < 1e-6 * a)
+        yz = x[on][:, 1:3]
+        yz = yz[np.argsort(np.arctan2(yz[:, 1], yz[:, 0]))]
+        area = 0.5 * np.sum(yz[:-1, 0] * yz[1:, 1] - yz[1:, 0] * yz[:-1, 1])
+        ts = common.read_timeseries(out)
+        chk.check(f"order {order}: |inner.Fx - P A| / (P A), A = {area:.6f} m2 (pi/4 = 0.785398)",
+                  abs(ts["inner.Fx"][-1] - P * area) / (P * area), 1e-9)
+
+
+def slope(chk):
+    n = np.array([2.0, 1.0]) / np.sqrt(5.0)
+    t = -P * n
+    for order in (1, 2):
+        base = ["-displacement_order", order]
+        a = run(f"slope_pressure_o{order}", "slope.opts", base + ["-bc_slope_pressure", P])
+        b = run(f"slope_traction_o{order}", "slope.opts",
+                base + ["-bc_slope_traction", f"{t[0]:.17g},{t[1]:.17g}"])
+        ta, tb = common.read_timeseries(a), common.read_timeseries(b)
+        worst, where = common.largest_series_difference(ta, tb)
+        chk.check(f"order {order}: pressure vs traction -P n, time series ({where})", worst, 1e-10)
+        _, ua = fields(a)
+        _, ub = fields(b)
+        chk.check(f"order {order}: pressure vs traction -P n, displacements",
+                  np.max(np.abs(ua - ub)) / np.max(np.abs(ub)), 1e-10)
+        chk.check(f"order {order}: slope.Fx = -P n_x L (L = sqrt(1.25))",
+                  abs(ta["slope.Fx"][-1] - t[0] * np.sqrt(1.25)) / P, 1e-10)
+
+
+def table(chk):
+    path = os.path.join(common.output_dir("loads_table_file"), "pressure.csv")
+    times, factors = [0.0, 1.0, 2.0, 3.0], [0.0, 0.5, -0.25, 2.0]
+    with open(path, "w") as f:
+        f.write("time,factor\n" + "".join(f"{t:g},{v:g}\n" for t, v in zip(times, factors)))
+    ref = run("table_step", "cylinder.opts", [])
+    _, u1 = fields(ref)
+    f1 = common.read_timeseries(ref)["inner.Fx"][-1]
+    out = run("table", "cylinder.opts",
+              ["-bc_inner_pressure_table", path, "-ts_max_steps", 3, "-ts_dt", 1])
+    ts = common.read_timeseries(out)
+    for i, step_time in enumerate((1.0, 2.0, 3.0)):
+        k = times.index(step_time)
+        _, u = fields(out, i + 1)  # fields: output 0 is the initial state
+        chk.check(f"t = {step_time:g} s (factor {factors[k]:g}): displacement / step load's",
+                  np.max(np.abs(u - factors[k] * u1)) / np.max(np.abs(u1)), 1e-10)
+        chk.check(f"t = {step_time:g} s: inner.Fx / step load's",
+                  abs(ts["inner.Fx"][i] - factors[k] * f1) / abs(f1), 1e-10)
+
+
+def floating(chk):
+    eps = -P * (1 + NU) * (1 - 2 * NU) / E
+    for order in (1, 2):
+        for ranks in (1, 2):
+            out = run(f"floating_o{order}_np{ranks}", "floating.opts",
+                      ["-displacement_order", order], ranks=ranks)
+            x, u = fields(out)
+            err = np.max(np.abs(u[:, :2] - eps * x[:, :2])) / abs(eps)
+            chk.check(f"order {order}, {ranks} rank(s): |u - eps x| / |eps| (1 m)", err, 1e-9)
+            ts = common.read_timeseries(out)
+            worst = max(abs(ts[c][-1]) for c in ("centre.Fx", "centre.Fy", "east.Fy"))
+            chk.check(f"order {order}, {ranks} rank(s): points' reactions / (P 2 m)",
+                      worst / (2 * P), 1e-9)
+
+
+CASES = {"cylinder": cylinder, "sphere": sphere, "slope": slope, "table": table,
+         "floating": floating}
+
+if __name__ == "__main__":
+    if "--list" in sys.argv:
+        print("\n".join(CASES))
+        sys.exit(0)
+    name = sys.argv[sys.argv.index("--case") + 1]
+    checks = common.Checks(f"loads: {name}")
+    CASES[name](checks)
+    checks.finish()

@@ -1,0 +1,74 @@
+#!/usr/bin/python3
+"""Bad input of the normal pressure (-bc_<b>_pressure) and of supports on physical points,
+with the checks of tests/input/bad_input.py (one clear 'poroseam: error:' line naming the
+option and value, non-zero exit, no crash, no hang).
+
+    loads_input.py --case NAME      one case (one ctest each, labels input and loads)
+    loads_input.py --list           the case names
+"""
+
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "input"))
+import bad_input  # noqa: E402  (its runner, checks and scenes)
+
+SLOPE = os.path.join(HERE, "slope.opts")        # bottom fixed in x and y, 2D
+FLOATING = os.path.join(HERE, "floating.opts")  # held by physical points centre and east
+SPHERE = os.path.join(HERE, "sphere.opts")      # 3D, with a physical curve 'rim'
+CASES = {
+    "pressure_normal_displacement": dict(
+        scene=SLOPE, args=["-bc_bottom_pressure", "1e4"],
+        expect=["-bc_bottom_uy and -bc_bottom_pressure", "'bottom'", "normal", "(0, -1)"]),
+    "pressure_and_traction": dict(
+        scene=SLOPE, args=["-bc_slope_pressure", "1e5", "-bc_slope_traction", "0,-1e5"],
+        expect=["-bc_slope_pressure and -bc_slope_traction", "'slope'"]),
+    "pressure_unknown_boundary": dict(
+        scene=SLOPE, args=["-bc_roof_pressure", "1e5"],
+        expect=["-bc_roof_pressure", "not in -boundaries"]),
+    "pressure_not_in_mesh": dict(
+        scene=SLOPE, args=["-boundaries", "bottom,slope,top,left,roof", "-bc_roof_pressure", "1e5"],
+        expect=["'roof'", "-boundaries", "nor a physical point"]),
+    "pressure_not_a_number": dict(
+        scene=SLOPE, args=["-bc_slope_pressure", "high"],
+        expect=["-bc_slope_pressure high", "expected a number"]),
+    "pressure_misspelt": dict(
+        scene=SLOPE, args=["-bc_slope_presure", "1e5"],
+        expect=["-bc_slope_presure", "did you mean -bc_slope_pressure?"]),
+    "pressure_table_alone": dict(
+        scene=SLOPE, args=["-bc_slope_pressure_ramp", "2"],
+        expect=["-bc_slope_pressure_ramp", "-bc_slope_pressure, which is not given"]),
+    "pressure_inside_mesh": dict(
+        scene=SLOPE, args=["-boundaries", "bottom,slope,top,left,cut", "-bc_cut_pressure", "1e5"],
+        expect=["-bc_cut_pressure", "'cut'", "inside the mesh"]),
+    "pressure_inside_mesh_np2": dict(
+        scene=SLOPE, args=["-boundaries", "bottom,slope,top,left,cut", "-bc_cut_pressure", "1e5"],
+        expect=["-bc_cut_pressure", "'cut'", "inside the mesh"], ranks=2),
+    "point_traction": dict(
+        scene=FLOATING, args=["-bc_east_traction", "1e3,0"],
+        expect=["-bc_east_traction", "'east' is a physical point", "displacements only"]),
+    "point_pressure": dict(
+        scene=FLOATING, args=["-bc_centre_pressure", "1e5"],
+        expect=["-bc_centre_pressure", "'centre' is a physical point"]),
+    "points_missing": dict(
+        scene=FLOATING, args=["-boundaries", "sides,centre", "-bc_centre_ux", "0",
+                              "-bc_centre_uy", "0"],
+        expect=["-bc_east_uy", "not in -boundaries"]),
+    "curve_3d": dict(
+        scene=SPHERE, args=["-boundaries", "inner,outer,xsym,ysym,zsym,rim", "-bc_rim_ux", "0"],
+        expect=["'rim' is a physical curve", "3D", "physical point"]),
+}
+
+
+def main():
+    if "--list" in sys.argv:
+        print("\n".join(CASES))
+        return 0
+    bad_input.CASES.clear()
+    bad_input.CASES.update(CASES)
+    return bad_input.main()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
