@@ -148,6 +148,44 @@ std::string meshGeometry(const std::string &geo, double size_factor, const MeshL
   return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log", limits.time_limit);
 }
 
+/// The vertices of the physical points (Gmsh point elements) in the label "Vertex Sets",
+/// valued by their physical tag, as "Face Sets" holds the face groups: PETSc 3.18's reader
+/// makes that label only with -dm_plex_gmsh_mark_vertices, which also marks every vertex of
+/// every other group. A point element's node is the vertex with its coordinates (the same
+/// numbers of the same file). Called on the serial mesh: rank 0 holds every vertex.
+PetscErrorCode markPhysicalPoints(
+    DM dm, const std::vector<std::pair<long long, std::array<double, 3>>> &points)
+{
+  PetscInt vStart, vEnd, cdim;
+  Vec coords;
+  PetscSection csec;
+  const PetscScalar *x;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateLabel(dm, "Vertex Sets")); // on every rank: distributed with the mesh
+  if (points.empty()) PetscFunctionReturn(0);
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMGetCoordinateDim(dm, &cdim));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(VecGetArrayRead(coords, &x));
+  for (const auto &[tag, p] : points) {
+    PetscInt best = -1;
+    double best_d = 0.0;
+    for (PetscInt v = vStart; v < vEnd; ++v) {
+      PetscInt off;
+      double d = 0.0;
+      PetscCall(PetscSectionGetOffset(csec, v, &off));
+      for (PetscInt k = 0; k < cdim; ++k)
+        d += (PetscRealPart(x[off + k]) - p[k]) * (PetscRealPart(x[off + k]) - p[k]);
+      if (best < 0 || d < best_d) best = v, best_d = d;
+    }
+    // the checked file has no coincident nodes (msh_geometry.cpp): the nearest is the one
+    if (best >= 0) PetscCall(DMSetLabelValue(dm, "Vertex Sets", best, (PetscInt)tag));
+  }
+  PetscCall(VecRestoreArrayRead(coords, &x));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_factor,
@@ -163,6 +201,7 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
   const long max_elements = limits.max_elements;
   std::string error, msh = file, note;
   std::vector<PhysicalName> found;
+  MshSummary summary; // rank 0's
   if (rank == 0) {
     struct stat st;
     const std::string what = "mesh file '" + file + "' (option -mesh)";
@@ -177,7 +216,6 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
     else if (!endsWith(file, ".msh"))
       error = what + ": expected a Gmsh .msh or .geo file";
     // Every .msh is checked before PETSc's reader sees it (that reader trusts the file).
-    MshSummary summary;
     if (error.empty()) error = checkGmshFile(msh, found, summary);
     if (error.empty() && summary.cells > max_elements)
       error = "mesh file '" + msh + "' has " + std::to_string(summary.cells) +
@@ -224,6 +262,7 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
     names->push_back(n);
   }
   PetscCall(DMPlexCreateGmshFromFile(comm, msh.c_str(), PETSC_TRUE, dm));
+  PetscCall(markPhysicalPoints(*dm, summary.points));
   PetscInt d;
   PetscCall(DMGetDimension(*dm, &d));
   *dim = (int)d;

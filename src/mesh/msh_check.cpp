@@ -426,6 +426,7 @@ private:
              binary);
     const std::string why = geometry_.element(tag, type, nodes, physical);
     if (!why.empty()) fail(why, binary);
+    if (type == 15 && physical >= 0) s_.points.push_back({physical, geometry_.coordinates(nodes[0])});
     int dim = 0;
     nodesOfType(type, &dim);
     if (dim > s_.dim) s_.dim = dim, s_.cells = 0;
@@ -551,8 +552,10 @@ private:
           nodes[k] =
               s_.binary ? binSize("an element's node") : integer("an element's node", LLONG_MIN);
         element(tag, type, nodes, physical.empty() ? -1 : physical[0], s_.binary);
-        for (size_t k = 1; k < physical.size(); ++k)
+        for (size_t k = 1; k < physical.size(); ++k) {
           geometry_.usePhysical((int)dim, physical[k]); // the entity's other groups
+          if (type == 15) s_.points.push_back({physical[k], geometry_.coordinates(nodes[0])});
+        }
       }
     }
     if (seen != total)
