@@ -2,7 +2,7 @@
 # supports on physical points (docs/scenes.md "Normal pressure", "Physical points: supports"),
 # label `loads`. tests/loads/loads.py: one ctest per case against closed forms and run-vs-run;
 # tests/loads/loads_input.py: the refusals, one ctest per case.
-foreach(case cylinder sphere slope table floating)
+foreach(case cylinder sphere slope axisymmetric table floating)
   poroseam_scene_test(loads.${case} "loads;verification" loads/loads.py --case ${case})
 endforeach()
 set_tests_properties(loads.floating PROPERTIES PROCESSORS 2)

@@ -21,6 +21,8 @@ Cases (elastic, E = 1e8 Pa, nu = 0.3, P = 1e5 Pa; the scenes are tests/loads/*.o
   slope      a pressure on an inclined face equals the traction vector -P n there, to
              round-off (time series, largest_series_difference, and the displacement field),
              orders 1 and 2.
+  axisymmetric  the axisymmetric thick cylinder: a pressure on the bore equals the traction
+             (P, 0) to round-off, and its resultant is P 2 pi a H (the ring factor).
   table      -bc_inner_pressure_table: each step's displacement field and force are the
              factor of the table times those of the step load (elastic: linear).
   floating   a square under pressure on all sides, held by two physical points only (one
@@ -154,6 +156,21 @@ def slope(chk):
                   abs(ta["slope.Fx"][-1] - t[0] * np.sqrt(1.25)) / P, 1e-10)
 
 
+def axisymmetric(chk):
+    a, h = 1.0, 0.5
+    pressure = run("axisym_pressure", "cylinder_axisym.opts", ["-bc_inner_pressure", P])
+    traction = run("axisym_traction", "cylinder_axisym.opts", ["-bc_inner_traction", f"{P:g},0"])
+    ta, tb = common.read_timeseries(pressure), common.read_timeseries(traction)
+    worst, where = common.largest_series_difference(ta, tb)
+    chk.check(f"pressure vs traction (P, 0) on the bore, time series ({where})", worst, 1e-10)
+    _, ua = fields(pressure)
+    _, ub = fields(traction)
+    chk.check("pressure vs traction (P, 0) on the bore, displacements",
+              np.max(np.abs(ua - ub)) / np.max(np.abs(ub)), 1e-10)
+    chk.check("|inner.Fx - P 2 pi a H| / (P 2 pi a H) (the ring factor 2 pi r)",
+              abs(ta["inner.Fx"][-1] - P * 2 * np.pi * a * h) / (P * 2 * np.pi * a * h), 1e-10)
+
+
 def table(chk):
     path = os.path.join(common.output_dir("loads_table_file"), "pressure.csv")
     times, factors = [0.0, 1.0, 2.0, 3.0], [0.0, 0.5, -0.25, 2.0]
@@ -190,8 +207,8 @@ def floating(chk):
                       worst / (2 * P), 1e-9)
 
 
-CASES = {"cylinder": cylinder, "sphere": sphere, "slope": slope, "table": table,
-         "floating": floating}
+CASES = {"cylinder": cylinder, "sphere": sphere, "slope": slope, "axisymmetric": axisymmetric,
+         "table": table, "floating": floating}
 
 if __name__ == "__main__":
     if "--list" in sys.argv:

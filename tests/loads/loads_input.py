@@ -36,7 +36,7 @@ CASES = {
     "pressure_misspelt": dict(
         scene=SLOPE, args=["-bc_slope_presure", "1e5"],
         expect=["-bc_slope_presure", "did you mean -bc_slope_pressure?"]),
-    "pressure_table_alone": dict(
+    "pressure_ramp_alone": dict(
         scene=SLOPE, args=["-bc_slope_pressure_ramp", "2"],
         expect=["-bc_slope_pressure_ramp", "-bc_slope_pressure, which is not given"]),
     "pressure_inside_mesh": dict(
