@@ -60,7 +60,7 @@ enum class BcKind { displacement, pressure, traction, flux, interface_pressure, 
 struct BoundaryCondition {
   std::string boundary; ///< Gmsh physical name
   int tag = 0;          ///< value in the "Face Sets" label ("Vertex Sets" for a point group)
-  int group_dim = 0;    ///< dimension of the boundary's physical group (Boundary::dim)
+  bool on_point = false; ///< the boundary is a physical point (Boundary::point)
   BcKind kind = BcKind::displacement;
   int component = 0;         ///< displacement component (0 = x) for kind displacement
   std::vector<double> value; ///< magnitude: 1 entry, or dim entries for a traction
@@ -77,9 +77,9 @@ struct BoundaryCondition {
 struct Boundary {
   std::string name;
   int tag = 0;
-  /// Dimension of its physical group: the mesh's dimension - 1 for a face group, 0 for a
-  /// physical point (holds prescribed displacements only: a support, docs/scenes.md).
-  int dim = 0;
+  /// A physical point (dimension 0) rather than a face group (dimension dim - 1): it holds
+  /// prescribed displacements only, a support (docs/scenes.md).
+  bool point = false;
 };
 
 /// A zero-thickness interface: one or more Gmsh face groups split into cohesive cells.

@@ -121,7 +121,7 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
     PetscCall(DMCreateLabel(dm, name.c_str()));
     PetscCall(DMGetLabel(dm, name.c_str(), &label));
     IS faces = nullptr;
-    DMLabel groups = b.dim == scene.dim - 1 ? faceSets : vertexSets;
+    DMLabel groups = b.point ? vertexSets : faceSets;
     if (groups) PetscCall(DMLabelGetStratumIS(groups, b.tag, &faces));
     if (faces) {
       const PetscInt *idx;

@@ -55,7 +55,7 @@ PetscErrorCode checkBodiesSupported(DM dm, const Scene &scene)
     PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
     PetscCall(DMGetLabel(dm, "Vertex Sets", &vertexSets)); // physical points (supports)
     for (const auto &bc : scene.conditions) {
-      DMLabel groups = bc.group_dim == dim - 1 ? faceSets : vertexSets;
+      DMLabel groups = bc.on_point ? vertexSets : faceSets;
       if (bc.kind != BcKind::displacement || !groups || bc.component >= dim) continue;
       IS is = nullptr;
       PetscCall(DMLabelGetStratumIS(groups, bc.tag, &is));

@@ -85,7 +85,7 @@ PetscErrorCode findBoundaryGroup(MPI_Comm comm, const std::vector<PhysicalName> 
     for (const auto &n : names)
       if (n.dim == d && n.name == name) {
         b->tag = n.tag;
-        b->dim = d;
+        b->point = d != dim - 1;
         PetscFunctionReturn(0);
       }
   for (const auto &n : names)
@@ -152,7 +152,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
     PetscFunctionBeginUser;
     bc.boundary = b.name;
     bc.tag = b.tag;
-    bc.group_dim = b.dim;
+    bc.on_point = b.point;
     PetscCall(readTimeFunction(PetscOptionsObject, comm, bc.option, bc.time));
     out.push_back(bc);
     PetscFunctionReturn(0);
@@ -299,7 +299,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   // A physical point is a support: it holds displacements, it takes no load (a load on a
   // point is a force of infinite pressure, and the displacement beneath it is unbounded).
   for (const auto &c : out)
-    PetscCheck(!(c.boundary == b.name && b.dim == 0 && scene.dim > 1 &&
+    PetscCheck(!(c.boundary == b.name && b.point &&
                  c.kind != BcKind::displacement),
                comm, PETSC_ERR_USER_INPUT,
                "%s: '%s' is a physical point; a point group carries prescribed displacements "
@@ -432,7 +432,6 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   for (const auto &name : names_w) {
     Boundary b;
     b.name = name;
-    b.dim = dim - 1;
     PetscCall(
         findPhysical(comm, names, dim - 1, name, "-water_load_boundaries", "boundary", &b.tag));
     for (const auto &other : scene.water_load_boundaries)
