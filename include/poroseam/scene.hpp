@@ -58,8 +58,8 @@ struct Region {
 enum class BcKind { displacement, pressure, traction, flux, interface_pressure, normal_pressure };
 
 struct BoundaryCondition {
-  std::string boundary; ///< Gmsh physical name
-  int tag = 0;          ///< value in the "Face Sets" label ("Vertex Sets" for a point group)
+  std::string boundary;  ///< Gmsh physical name
+  int tag = 0;           ///< value in the "Face Sets" label ("Vertex Sets" for a point group)
   bool on_point = false; ///< the boundary is a physical point (Boundary::point)
   BcKind kind = BcKind::displacement;
   int component = 0;         ///< displacement component (0 = x) for kind displacement

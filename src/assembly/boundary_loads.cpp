@@ -1,6 +1,6 @@
 // Loads on the boundary (split from problem.cpp): the faces that carry applied tractions,
-// normal pressures, fluxes and the free water's pressure, and their terms of the residual, also summed per
-// boundary for the force and flow columns of the time series (run_resultants.cpp).
+// normal pressures, fluxes and the free water's pressure, and their terms of the residual, also
+// summed per boundary for the force and flow columns of the time series (run_resultants.cpp).
 
 #include "poroseam/problem.hpp"
 
@@ -81,7 +81,7 @@ PetscErrorCode Problem::setupLoadedFaces()
 }
 
 PetscErrorCode Problem::pressureNormal(const BoundaryCondition &bc, PetscInt face, LoadedFace *f,
-                                      std::string *error) const
+                                       std::string *error) const
 {
   const PetscInt *support;
   PetscInt ns;

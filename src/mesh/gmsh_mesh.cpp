@@ -153,8 +153,8 @@ std::string meshGeometry(const std::string &geo, double size_factor, const MeshL
 /// makes that label only with -dm_plex_gmsh_mark_vertices, which also marks every vertex of
 /// every other group. A point element's node is the vertex with its coordinates (the same
 /// numbers of the same file). Called on the serial mesh: rank 0 holds every vertex.
-PetscErrorCode markPhysicalPoints(
-    DM dm, const std::vector<std::pair<long long, std::array<double, 3>>> &points)
+PetscErrorCode
+markPhysicalPoints(DM dm, const std::vector<std::pair<long long, std::array<double, 3>>> &points)
 {
   PetscInt vStart, vEnd, cdim;
   Vec coords;

@@ -426,7 +426,8 @@ private:
              binary);
     const std::string why = geometry_.element(tag, type, nodes, physical);
     if (!why.empty()) fail(why, binary);
-    if (type == 15 && physical >= 0) s_.points.push_back({physical, geometry_.coordinates(nodes[0])});
+    if (type == 15 && physical >= 0)
+      s_.points.push_back({physical, geometry_.coordinates(nodes[0])});
     int dim = 0;
     nodesOfType(type, &dim);
     if (dim > s_.dim) s_.dim = dim, s_.cells = 0;

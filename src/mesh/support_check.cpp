@@ -234,10 +234,10 @@ PetscErrorCode checkBodiesSupported(DM dm, const Scene &scene)
             << "modes and fixing a point\")";
       else
         msg << "has no displacement condition along " << directions
-          << " on any of its boundaries and no interface joining it to a part that has: it can "
-          << "move as a rigid body (a rigid-body mode, a singular stiffness). Fix a displacement "
-          << "along " << directions << " on one of its boundaries (-bc_<boundary>_u"
-          << directions.substr(0, 1) << " 0), or join it to the rest of the mesh";
+            << " on any of its boundaries and no interface joining it to a part that has: it can "
+            << "move as a rigid body (a rigid-body mode, a singular stiffness). Fix a displacement "
+            << "along " << directions << " on one of its boundaries (-bc_<boundary>_u"
+            << directions.substr(0, 1) << " 0), or join it to the rest of the mesh";
       error = msg.str();
     }
   }

@@ -65,7 +65,8 @@ const char *const kRegionKeys[] = {"material",
                                    "friction_angle",
                                    "dilation_angle",
                                    "tension_cutoff"};
-const char *const kBoundaryQuantities[] = {"ux", "uy", "uz", "p", "p3", "traction", "pressure", "flux"};
+const char *const kBoundaryQuantities[] = {"ux", "uy",       "uz",       "p",
+                                           "p3", "traction", "pressure", "flux"};
 const char *const kInterfaceKeys[] = {
     "surfaces",       "side1",       "KN",   "KT", "friction", "dilation_angle",
     "dilation_limit", "integration", "flow", "D0", "T1",       "T2"};

@@ -299,9 +299,8 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   // A physical point is a support: it holds displacements, it takes no load (a load on a
   // point is a force of infinite pressure, and the displacement beneath it is unbounded).
   for (const auto &c : out)
-    PetscCheck(!(c.boundary == b.name && b.point &&
-                 c.kind != BcKind::displacement),
-               comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(!(c.boundary == b.name && b.point && c.kind != BcKind::displacement), comm,
+               PETSC_ERR_USER_INPUT,
                "%s: '%s' is a physical point; a point group carries prescribed displacements "
                "only (%sux, _uy%s), a support that removes a rigid-body mode; loads, pressures "
                "and fluxes need a face group",
