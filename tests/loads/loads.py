@@ -28,7 +28,8 @@ Cases (elastic, E = 1e8 Pa, nu = 0.3, P = 1e5 Pa; the scenes are tests/loads/*.o
   floating   a square under pressure on all sides, held by two physical points only (one
              inside the mesh): uniform compression u = eps x, eps = -P (1 + nu)(1 - 2 nu)/E,
              exactly (linear fields); the points' reactions vanish (a balanced load). Orders 1
-             and 2, 1 and 2 ranks.
+             and 2, 1 and 2 ranks; and a cube held by three points (the 3D recipe of
+             docs/scenes.md), order 1.
 """
 
 import os
@@ -205,6 +206,16 @@ def floating(chk):
             worst = max(abs(ts[c][-1]) for c in ("centre.Fx", "centre.Fy", "east.Fy"))
             chk.check(f"order {order}, {ranks} rank(s): points' reactions / (P 2 m)",
                       worst / (2 * P), 1e-9)
+    # 3D: a cube held by three points (all-round pressure: eps = -P (1 - 2 nu)/E)
+    eps = -P * (1 - 2 * NU) / E
+    out = run("floating_cube", "floating_cube.opts", [])
+    x, u = fields(out)
+    chk.check("cube, order 1: |u - eps x| / |eps| (1 m)",
+              np.max(np.abs(u - eps * x)) / abs(eps), 1e-9)
+    ts = common.read_timeseries(out)
+    worst = max(abs(ts[c][-1]) for c in ("centre.Fx", "centre.Fy", "centre.Fz", "px.Fy",
+                                          "px.Fz", "py.Fz"))
+    chk.check("cube: points' reactions / (P 4 m2)", worst / (4 * P), 1e-9)
 
 
 CASES = {"cylinder": cylinder, "sphere": sphere, "slope": slope, "axisymmetric": axisymmetric,
