@@ -59,8 +59,8 @@ enum class BcKind { displacement, pressure, traction, flux, interface_pressure, 
 
 struct BoundaryCondition {
   std::string boundary;  ///< Gmsh physical name
-  int tag = 0;           ///< value in the "Face Sets" label ("Vertex Sets" for a point group)
-  bool on_point = false; ///< the boundary is a physical point (Boundary::point)
+  int tag = 0;           ///< value in its group's label (groupLabel(support_dim))
+  int support_dim = -1;  ///< the boundary's Boundary::support_dim
   BcKind kind = BcKind::displacement;
   int component = 0;         ///< displacement component (0 = x) for kind displacement
   std::vector<double> value; ///< magnitude: 1 entry, or dim entries for a traction
@@ -74,12 +74,19 @@ struct BoundaryCondition {
   }
 };
 
+/// The mesh label that holds the groups of a Boundary::support_dim: "Face Sets" (-1, PETSc's
+/// reader), "Vertex Sets" (0) or "Edge Sets" (1) (marked by loadGmshMesh, gmsh_mesh.cpp).
+inline const char *groupLabel(int support_dim)
+{
+  return support_dim == 0 ? "Vertex Sets" : support_dim == 1 ? "Edge Sets" : "Face Sets";
+}
+
 struct Boundary {
   std::string name;
   int tag = 0;
-  /// A physical point (dimension 0) rather than a face group (dimension dim - 1): it holds
-  /// prescribed displacements only, a support (docs/scenes.md).
-  bool point = false;
+  /// -1: a face group (dimension dim - 1). 0: a physical point, 1: a physical curve of a 3D
+  /// mesh: a support, holding prescribed displacements only (docs/scenes.md).
+  int support_dim = -1;
 };
 
 /// A zero-thickness interface: one or more Gmsh face groups split into cohesive cells.

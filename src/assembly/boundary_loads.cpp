@@ -52,7 +52,7 @@ PetscErrorCode Problem::setupLoadedFaces()
   PetscCall(DMGetLabel(dm_, "Face Sets", &faceSets));
   for (size_t i = 0; i < scene_->conditions.size(); ++i) {
     const auto &bc = scene_->conditions[i];
-    if (bc.dirichlet() || !faceSets || bc.on_point) continue;
+    if (bc.dirichlet() || !faceSets || bc.support_dim >= 0) continue;
     IS faces = nullptr;
     PetscCall(DMLabelGetStratumIS(faceSets, bc.tag, &faces));
     if (!faces) continue;

@@ -71,9 +71,7 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
   PetscFunctionBeginUser;
   PetscCall(checkElementOrder(PetscObjectComm((PetscObject)dm), scene));
   PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
-  DMLabel vertexSets;
   PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
-  PetscCall(DMGetLabel(dm, "Vertex Sets", &vertexSets)); // physical points (supports)
   PetscCall(DMCreateLabel(dm, kPorousLabel));
   PetscCall(DMGetLabel(dm, kPorousLabel, &porous));
   if (scene.hasPressure() && cellSets) {
@@ -121,7 +119,8 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
     PetscCall(DMCreateLabel(dm, name.c_str()));
     PetscCall(DMGetLabel(dm, name.c_str(), &label));
     IS faces = nullptr;
-    DMLabel groups = b.point ? vertexSets : faceSets;
+    DMLabel groups; // face groups, or physical points and curves (supports)
+    PetscCall(DMGetLabel(dm, groupLabel(b.support_dim), &groups));
     if (groups) PetscCall(DMLabelGetStratumIS(groups, b.tag, &faces));
     if (faces) {
       const PetscInt *idx;

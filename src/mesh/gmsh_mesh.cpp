@@ -148,41 +148,57 @@ std::string meshGeometry(const std::string &geo, double size_factor, const MeshL
   return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log", limits.time_limit);
 }
 
-/// The vertices of the physical points (Gmsh point elements) in the label "Vertex Sets",
-/// valued by their physical tag, as "Face Sets" holds the face groups: PETSc 3.18's reader
-/// makes that label only with -dm_plex_gmsh_mark_vertices, which also marks every vertex of
-/// every other group. A point element's node is the vertex with its coordinates (the same
-/// numbers of the same file). Called on the serial mesh: rank 0 holds every vertex.
-PetscErrorCode
-markPhysicalPoints(DM dm, const std::vector<std::pair<long long, std::array<double, 3>>> &points)
+/// The supports' labels, as "Face Sets" holds the face groups: "Vertex Sets", the vertices of
+/// the physical points, and in 3D "Edge Sets", the edges of the physical curves, valued by
+/// their physical tag. PETSc 3.18's reader makes neither (its -dm_plex_gmsh_mark_vertices
+/// marks every vertex of every group, with one value each). A node of a point or line element
+/// is the vertex with its coordinates (the same numbers of the same file; the checked file has
+/// no coincident nodes). Called on the serial mesh: rank 0 holds every point.
+PetscErrorCode markSupports(DM dm, const MshSummary &msh)
 {
-  PetscInt vStart, vEnd, cdim;
+  PetscInt vStart, vEnd, cdim, dim;
   Vec coords;
   PetscSection csec;
   const PetscScalar *x;
   PetscFunctionBeginUser;
   PetscCall(DMCreateLabel(dm, "Vertex Sets")); // on every rank: distributed with the mesh
-  if (points.empty()) PetscFunctionReturn(0);
+  PetscCall(DMCreateLabel(dm, "Edge Sets"));
+  PetscCall(DMGetDimension(dm, &dim));
+  const bool lines = dim == 3 && !msh.lines.empty();
+  if (msh.points.empty() && !lines) PetscFunctionReturn(0);
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   PetscCall(DMGetCoordinateDim(dm, &cdim));
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(DMGetCoordinateSection(dm, &csec));
   PetscCall(VecGetArrayRead(coords, &x));
-  for (const auto &[tag, p] : points) {
-    PetscInt best = -1;
-    double best_d = 0.0;
-    for (PetscInt v = vStart; v < vEnd; ++v) {
-      PetscInt off;
-      double d = 0.0;
-      PetscCall(PetscSectionGetOffset(csec, v, &off));
-      for (PetscInt k = 0; k < cdim; ++k)
-        d += (PetscRealPart(x[off + k]) - p[k]) * (PetscRealPart(x[off + k]) - p[k]);
-      if (best < 0 || d < best_d) best = v, best_d = d;
-    }
-    // the checked file has no coincident nodes (msh_geometry.cpp): the nearest is the one
-    if (best >= 0) PetscCall(DMSetLabelValue(dm, "Vertex Sets", best, (PetscInt)tag));
+  std::map<std::array<double, 3>, PetscInt> vertexAt;
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt off;
+    std::array<double, 3> p = {0, 0, 0};
+    PetscCall(PetscSectionGetOffset(csec, v, &off));
+    for (PetscInt k = 0; k < cdim; ++k)
+      p[k] = PetscRealPart(x[off + k]);
+    vertexAt[p] = v;
   }
   PetscCall(VecRestoreArrayRead(coords, &x));
+  auto find = [&](const double *q) {
+    std::array<double, 3> p = {q[0], cdim > 1 ? q[1] : 0.0, cdim > 2 ? q[2] : 0.0};
+    const auto it = vertexAt.find(p);
+    return it == vertexAt.end() ? (PetscInt)-1 : it->second;
+  };
+  for (const auto &[tag, p] : msh.points) {
+    const PetscInt v = find(p.data());
+    if (v >= 0) PetscCall(DMSetLabelValue(dm, "Vertex Sets", v, (PetscInt)tag));
+  }
+  for (const auto &[tag, ends] : lines ? msh.lines : decltype(msh.lines){}) {
+    const PetscInt v[2] = {find(&ends[0]), find(&ends[3])};
+    if (v[0] < 0 || v[1] < 0) continue;
+    const PetscInt *join;
+    PetscInt n;
+    PetscCall(DMPlexGetJoin(dm, 2, v, &n, &join));
+    if (n == 1) PetscCall(DMSetLabelValue(dm, "Edge Sets", join[0], (PetscInt)tag));
+    PetscCall(DMPlexRestoreJoin(dm, 2, v, &n, &join));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -262,7 +278,7 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
     names->push_back(n);
   }
   PetscCall(DMPlexCreateGmshFromFile(comm, msh.c_str(), PETSC_TRUE, dm));
-  PetscCall(markPhysicalPoints(*dm, summary.points));
+  PetscCall(markSupports(*dm, summary));
   PetscInt d;
   PetscCall(DMGetDimension(*dm, &d));
   *dim = (int)d;

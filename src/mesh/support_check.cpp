@@ -151,11 +151,9 @@ PetscErrorCode checkBodiesSupported(DM dm, const Scene &scene)
           G[i * nmodes + j] += row[i] * row[j];
       PetscFunctionReturn(0);
     };
-    DMLabel faceSets, vertexSets;
-    PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
-    PetscCall(DMGetLabel(dm, "Vertex Sets", &vertexSets)); // physical points (supports)
     for (const auto &bc : scene.conditions) {
-      DMLabel groups = bc.on_point ? vertexSets : faceSets;
+      DMLabel groups; // face groups, or physical points and curves (supports)
+      PetscCall(DMGetLabel(dm, groupLabel(bc.support_dim), &groups));
       if (bc.kind != BcKind::displacement || !groups || bc.component >= dim) continue;
       IS is = nullptr;
       PetscCall(DMLabelGetStratumIS(groups, bc.tag, &is));

@@ -75,29 +75,24 @@ PetscErrorCode findPhysical(MPI_Comm comm, const std::vector<PhysicalName> &name
 namespace {
 
 /// A name of -boundaries: a face group (dimension dim - 1), else a physical point (dimension
-/// 0, a support: prescribed displacements only). A physical curve of a 3D mesh is refused:
-/// PETSc 3.18's Gmsh reader keeps no label of edges, so its points could not be found.
+/// 0) or, in 3D, a physical curve (dimension 1): supports, prescribed displacements only.
 PetscErrorCode findBoundaryGroup(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
                                  const std::string &name, Boundary *b)
 {
   PetscFunctionBeginUser;
-  for (int d : {dim - 1, 0})
+  for (int d : {dim - 1, 0, 1})
     for (const auto &n : names)
-      if (n.dim == d && n.name == name) {
+      if (n.dim == d && n.name == name && d < dim) {
         b->tag = n.tag;
-        b->point = d != dim - 1;
+        b->support_dim = d == dim - 1 ? -1 : d;
         PetscFunctionReturn(0);
       }
-  for (const auto &n : names)
-    PetscCheck(!(n.name == name && n.dim == 1 && dim == 3), comm, PETSC_ERR_USER_INPUT,
-               "-boundaries: '%s' is a physical curve (dimension 1) of the 3D mesh: a condition "
-               "needs a face group (dimension 2) or a physical point (dimension 0); to hold a "
-               "line, fix physical points on it, or a face group that contains it",
-               name.c_str());
   SETERRQ(comm, PETSC_ERR_USER_INPUT,
           "-boundaries: boundary '%s' is not a physical group of dimension %d in the mesh, "
-          "nor a physical point; the mesh has: %s (physical points: %s)",
-          name.c_str(), dim - 1, joinNames(names, dim - 1).c_str(), joinNames(names, 0).c_str());
+          "nor a physical point%s; the mesh has: %s (physical points: %s%s%s)",
+          name.c_str(), dim - 1, dim == 3 ? " or curve" : "", joinNames(names, dim - 1).c_str(),
+          joinNames(names, 0).c_str(), dim == 3 ? "; curves: " : "",
+          dim == 3 ? joinNames(names, 1).c_str() : "");
 }
 
 /// A condition's time function (-bc_<b>_<q>_ramp or _table), in the boundary's section.
@@ -152,7 +147,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
     PetscFunctionBeginUser;
     bc.boundary = b.name;
     bc.tag = b.tag;
-    bc.on_point = b.point;
+    bc.support_dim = b.support_dim;
     PetscCall(readTimeFunction(PetscOptionsObject, comm, bc.option, bc.time));
     out.push_back(bc);
     PetscFunctionReturn(0);
@@ -296,15 +291,18 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       PetscCall(add(bc));
     }
   }
-  // A physical point is a support: it holds displacements, it takes no load (a load on a
-  // point is a force of infinite pressure, and the displacement beneath it is unbounded).
+  // A physical point or curve is a support: it holds displacements, it takes no load (a load
+  // on a point or a line of a 3D body is of infinite pressure: the displacement beneath it is
+  // unbounded).
+  const char *support = b.support_dim == 0 ? "point" : "curve";
   for (const auto &c : out)
-    PetscCheck(!(c.boundary == b.name && b.point && c.kind != BcKind::displacement), comm,
-               PETSC_ERR_USER_INPUT,
-               "%s: '%s' is a physical point; a point group carries prescribed displacements "
-               "only (%sux, _uy%s), a support that removes a rigid-body mode; loads, pressures "
-               "and fluxes need a face group",
-               c.option.c_str(), b.name.c_str(), p.c_str(), scene.dim == 3 ? ", _uz" : "");
+    PetscCheck(!(c.boundary == b.name && b.support_dim >= 0 && c.kind != BcKind::displacement),
+               comm, PETSC_ERR_USER_INPUT,
+               "%s: '%s' is a physical %s; a %s group carries prescribed displacements only "
+               "(%sux, _uy%s), a support that removes a rigid-body mode; loads, pressures and "
+               "fluxes need a face group",
+               c.option.c_str(), b.name.c_str(), support, support, p.c_str(),
+               scene.dim == 3 ? ", _uz" : "");
   PetscFunctionReturn(0);
 }
 

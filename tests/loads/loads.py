@@ -27,9 +27,10 @@ Cases (elastic, E = 1e8 Pa, nu = 0.3, P = 1e5 Pa; the scenes are tests/loads/*.o
              factor of the table times those of the step load (elastic: linear).
   floating   a square under pressure on all sides, held by two physical points only (one
              inside the mesh): uniform compression u = eps x, eps = -P (1 + nu)(1 - 2 nu)/E,
-             exactly (linear fields); the points' reactions vanish (a balanced load). Orders 1
-             and 2, 1 and 2 ranks; and a cube held by three points (the 3D recipe of
-             docs/scenes.md), order 1.
+             exactly (linear fields); the points' reactions vanish (a balanced load). Order 1,
+             order 2 on 1 and 2 ranks; a cube held by three points (the 3D recipe of
+             docs/scenes.md), order 1; the cube held by a physical curve inside it and two
+             points, order 1 (1 rank) and 2 (2 ranks).
 """
 
 import os
@@ -195,17 +196,16 @@ def table(chk):
 
 def floating(chk):
     eps = -P * (1 + NU) * (1 - 2 * NU) / E
-    for order in (1, 2):
-        for ranks in (1, 2):
-            out = run(f"floating_o{order}_np{ranks}", "floating.opts",
-                      ["-displacement_order", order], ranks=ranks)
-            x, u = fields(out)
-            err = np.max(np.abs(u[:, :2] - eps * x[:, :2])) / abs(eps)
-            chk.check(f"order {order}, {ranks} rank(s): |u - eps x| / |eps| (1 m)", err, 1e-9)
-            ts = common.read_timeseries(out)
-            worst = max(abs(ts[c][-1]) for c in ("centre.Fx", "centre.Fy", "east.Fy"))
-            chk.check(f"order {order}, {ranks} rank(s): points' reactions / (P 2 m)",
-                      worst / (2 * P), 1e-9)
+    for order, ranks in ((1, 1), (2, 1), (2, 2)):
+        out = run(f"floating_o{order}_np{ranks}", "floating.opts",
+                  ["-displacement_order", order], ranks=ranks)
+        x, u = fields(out)
+        err = np.max(np.abs(u[:, :2] - eps * x[:, :2])) / abs(eps)
+        chk.check(f"order {order}, {ranks} rank(s): |u - eps x| / |eps| (1 m)", err, 1e-9)
+        ts = common.read_timeseries(out)
+        worst = max(abs(ts[c][-1]) for c in ("centre.Fx", "centre.Fy", "east.Fy"))
+        chk.check(f"order {order}, {ranks} rank(s): points' reactions / (P 2 m)",
+                  worst / (2 * P), 1e-9)
     # 3D: a cube held by three points (all-round pressure: eps = -P (1 - 2 nu)/E)
     eps = -P * (1 - 2 * NU) / E
     out = run("floating_cube", "floating_cube.opts", [])
@@ -216,6 +216,18 @@ def floating(chk):
     worst = max(abs(ts[c][-1]) for c in ("centre.Fx", "centre.Fy", "centre.Fz", "px.Fy",
                                           "px.Fz", "py.Fz"))
     chk.check("cube: points' reactions / (P 4 m2)", worst / (4 * P), 1e-9)
+    # 3D: the cube held by a line (a physical curve inside it) and two points; order 2 on 2
+    # ranks holds the line's edge nodes too
+    for order, ranks in ((1, 1), (2, 2)):
+        out = run(f"floating_cube_line_o{order}", "floating_cube_line.opts",
+                  ["-displacement_order", order], ranks=ranks)
+        x, u = fields(out)
+        chk.check(f"cube held by a line, order {order}, {ranks} rank(s): |u - eps x| / |eps|",
+                  np.max(np.abs(u - eps * x)) / abs(eps), 1e-9)
+        ts = common.read_timeseries(out)
+        worst = max(abs(ts[c][-1]) for c in ("axis.Fy", "axis.Fz", "centre.Fx", "py.Fz"))
+        chk.check(f"cube held by a line, order {order}: reactions / (P 4 m2)",
+                  worst / (4 * P), 1e-9)
 
 
 CASES = {"cylinder": cylinder, "sphere": sphere, "slope": slope, "axisymmetric": axisymmetric,

@@ -46,9 +46,10 @@ CASES = {
     "rotation_free": dict(
         scene=ONE_POINT, args=[],
         expect=["region 'square'", "rotation about z free", "second point"]),
-    "curve_3d": dict(
-        scene=SPHERE, args=["-boundaries", "inner,outer,xsym,ysym,zsym,rim", "-bc_rim_ux", "0"],
-        expect=["'rim' is a physical curve", "3D", "physical point"]),
+    "curve_traction": dict(
+        scene=SPHERE, args=["-boundaries", "inner,outer,xsym,ysym,zsym,rim",
+                            "-bc_rim_traction", "1e3,0,0"],
+        expect=["-bc_rim_traction", "'rim' is a physical curve", "displacements only"]),
 }
 
 
