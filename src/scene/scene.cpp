@@ -497,7 +497,8 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
              "missing option -regions: list the mesh regions (cell physical names: %s)",
              joinNames(names, dim).c_str());
   PetscCall(getStringList(PetscOptionsObject, "-boundaries",
-                          "the boundaries (face groups) the scene uses, comma-separated",
+                          "the boundaries (face groups; physical points, 3D curves: supports) the "
+                          "scene uses, comma-separated",
                           boundaries, &set));
   PetscCall(getStringList(PetscOptionsObject, "-interfaces",
                           "the zero-thickness interfaces, comma-separated", interfaces, &set));
