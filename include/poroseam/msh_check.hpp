@@ -6,7 +6,9 @@
 
 #include "poroseam/scene.hpp"
 
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace poroseam {
@@ -17,6 +19,12 @@ struct MshSummary {
   int dim = 0;         // largest dimension of an element
   long nodes = 0;
   long cells = 0; // elements of dimension `dim`
+  /// Each point element of a physical point group: (physical tag, coordinates). PETSc 3.18's
+  /// reader keeps no label of them (loadGmshMesh marks their vertices, "Vertex Sets").
+  std::vector<std::pair<long long, std::array<double, 3>>> points;
+  /// Each line element of a physical curve: (physical tag, its two nodes' coordinates); in a
+  /// 3D mesh loadGmshMesh marks their edges ("Edge Sets").
+  std::vector<std::pair<long long, std::array<double, 6>>> lines;
 };
 
 /// Reads the whole file at `path` and checks it against the MSH 2.2 and 4.1 formats (ASCII

@@ -23,6 +23,8 @@ public:
   static long long maxNodeTag(long long nodes) { return 100 * nodes + 1000000; }
 
   bool has(long long tag) const { return index_.count(tag) > 0; }
+  /// The coordinates of a node that exists (has(tag)).
+  const std::array<double, 3> &coordinates(long long tag) const { return x_[index_.at(tag)]; }
   /// Records a node; false when its tag is there already.
   bool node(long long tag, double x, double y, double z);
   /// Checks one linear element (Gmsh type 1, 2, 3, 4, 5 or 15) whose nodes exist, and notes

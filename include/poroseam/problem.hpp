@@ -147,7 +147,7 @@ private:
     PetscInt face;
     int condition; ///< index in scene.conditions, or kWaterLoad
     int element;
-    double normal[3]; ///< outward unit normal (water load only)
+    double normal[3]; ///< outward unit normal (water load and normal pressure only)
     int boundary;     ///< index in scene.boundaries (-1: not one of them)
   };
   /// LoadedFace::condition of a face of -water_load_boundaries.
@@ -171,6 +171,10 @@ private:
   PetscErrorCode outwardNormal(PetscInt face, PetscInt cell, double normal[3]) const;
   /// The faces with tractions or fluxes (boundary_loads.cpp), then those of the free water.
   PetscErrorCode setupLoadedFaces();
+  /// The outward normal of a face of a -bc_<b>_pressure; `error` set when the face is inside
+  /// the mesh or the boundary prescribes a displacement along its normal.
+  PetscErrorCode pressureNormal(const BoundaryCondition &bc, PetscInt face, LoadedFace *f,
+                                std::string *error) const;
   /// The faces of -water_load_boundaries with their outward normals, appended to faces_.
   PetscErrorCode setupWaterLoad(const std::vector<char> &ghost, PetscInt pStart);
   double gravityVector(int d) const;

@@ -53,14 +53,18 @@ struct Region {
   bool inGround() const { return ground.value_or(porous()); }
 };
 
-enum class BcKind { displacement, pressure, traction, flux, interface_pressure };
+/// pressure: the pore pressure (-bc_<b>_p); normal_pressure: a load along the faces' inward
+/// normal (-bc_<b>_pressure, t = -P n).
+enum class BcKind { displacement, pressure, traction, flux, interface_pressure, normal_pressure };
 
 struct BoundaryCondition {
-  std::string boundary; ///< Gmsh physical name
-  int tag = 0;          ///< value in the "Face Sets" label
+  std::string boundary;  ///< Gmsh physical name
+  int tag = 0;           ///< value in its group's label (groupLabel(support_dim))
+  int support_dim = -1;  ///< the boundary's Boundary::support_dim
   BcKind kind = BcKind::displacement;
   int component = 0;         ///< displacement component (0 = x) for kind displacement
   std::vector<double> value; ///< magnitude: 1 entry, or dim entries for a traction
+                             ///< (normal_pressure: P [Pa], positive pushes into the body)
   TimeFunction time = TimeFunction::step();
   std::string option; ///< the option that defined it, for messages
   bool dirichlet() const
@@ -70,9 +74,19 @@ struct BoundaryCondition {
   }
 };
 
+/// The mesh label that holds the groups of a Boundary::support_dim: "Face Sets" (-1, PETSc's
+/// reader), "Vertex Sets" (0) or "Edge Sets" (1) (marked by loadGmshMesh, gmsh_mesh.cpp).
+inline const char *groupLabel(int support_dim)
+{
+  return support_dim == 0 ? "Vertex Sets" : support_dim == 1 ? "Edge Sets" : "Face Sets";
+}
+
 struct Boundary {
   std::string name;
   int tag = 0;
+  /// -1: a face group (dimension dim - 1). 0: a physical point, 1: a physical curve of a 3D
+  /// mesh: a support, holding prescribed displacements only (docs/scenes.md).
+  int support_dim = -1;
 };
 
 /// A zero-thickness interface: one or more Gmsh face groups split into cohesive cells.

@@ -1,6 +1,6 @@
 // Loads on the boundary (split from problem.cpp): the faces that carry applied tractions,
-// fluxes and the free water's pressure, and their terms of the residual, also summed per
-// boundary for the force and flow columns of the time series (run_resultants.cpp).
+// normal pressures, fluxes and the free water's pressure, and their terms of the residual, also
+// summed per boundary for the force and flow columns of the time series (run_resultants.cpp).
 
 #include "poroseam/problem.hpp"
 
@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <petscsf.h>
+#include <sstream>
 
 namespace poroseam {
 namespace {
@@ -47,10 +48,11 @@ PetscErrorCode Problem::setupLoadedFaces()
   for (PetscInt i = 0; i < (nleaves > 0 ? nleaves : 0); ++i)
     ghost[(leaves ? leaves[i] : i) - pStart] = 1;
   DMLabel faceSets;
+  std::string error;
   PetscCall(DMGetLabel(dm_, "Face Sets", &faceSets));
   for (size_t i = 0; i < scene_->conditions.size(); ++i) {
     const auto &bc = scene_->conditions[i];
-    if (bc.dirichlet() || !faceSets) continue;
+    if (bc.dirichlet() || !faceSets || bc.support_dim >= 0) continue;
     IS faces = nullptr;
     PetscCall(DMLabelGetStratumIS(faceSets, bc.tag, &faces));
     if (!faces) continue;
@@ -64,12 +66,53 @@ PetscErrorCode Problem::setupLoadedFaces()
       PetscCall(DMPlexGetCellType(dm_, idx[k], &ct));
       LoadedFace f{idx[k], (int)i, 0, {0, 0, 0}, boundaryIndex(*scene_, bc.boundary)};
       PetscCall(elementIndex(ct, &f.element));
+      if (bc.kind == BcKind::normal_pressure) {
+        PetscCall(pressureNormal(bc, idx[k], &f, &error));
+        if (!error.empty()) break;
+      }
       faces_.push_back(f);
     }
     PetscCall(ISRestoreIndices(faces, &idx));
     PetscCall(ISDestroy(&faces));
   }
+  PetscCall(checkOnAllRanks(PetscObjectComm((PetscObject)dm_), error));
   PetscCall(setupWaterLoad(ghost, pStart));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Problem::pressureNormal(const BoundaryCondition &bc, PetscInt face, LoadedFace *f,
+                                       std::string *error) const
+{
+  const PetscInt *support;
+  PetscInt ns;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetSupportSize(dm_, face, &ns));
+  PetscCall(DMPlexGetSupport(dm_, face, &support));
+  if (ns != 1) {
+    // Inside the mesh a face has two sides and no outward normal: which side is pushed?
+    *error = bc.option + ": boundary '" + bc.boundary +
+             "' has faces inside the mesh (cells on both sides); a normal pressure acts on the "
+             "outer boundary only (inside, give a -bc_<b>_traction vector)";
+    PetscFunctionReturn(0);
+  }
+  PetscCall(outwardNormal(face, support[0], f->normal));
+  // A prescribed displacement component along the normal replaces the equilibrium row the
+  // pressure loads (the traction rule of readBoundary); a tangential one is a rough support
+  // and is kept (docs/scenes.md).
+  for (const auto &c : scene_->conditions)
+    if (c.boundary == bc.boundary && c.kind == BcKind::displacement &&
+        std::abs(f->normal[c.component]) > 1e-8) {
+      std::ostringstream n;
+      n << "(";
+      for (int d = 0; d < dim_; ++d)
+        n << (d ? ", " : "") << f->normal[d];
+      n << ")";
+      *error = c.option + " and " + bc.option + " on the same boundary '" + bc.boundary +
+               "': the pressure acts along the faces' normal, here " + n.str() +
+               ", and the prescribed component leaves none of it to apply; give one of them "
+               "(or split the boundary in the mesh)";
+      break;
+    }
   PetscFunctionReturn(0);
 }
 
@@ -174,6 +217,10 @@ PetscErrorCode Problem::addLoads(double t, double mass_scale, Vec f,
         for (int a = 0; a < nn; ++a)
           for (int i = 0; i < dim_; ++i)
             F[a * dim_ + i] -= w * N[a] * bc->value[i] * factor;
+      else if (bc->kind == BcKind::normal_pressure) // t = -P n on the face's own normal
+        for (int a = 0; a < nn; ++a)
+          for (int i = 0; i < dim_; ++i)
+            F[a * dim_ + i] += w * N[a] * bc->value[0] * factor * face.normal[i];
       else if (bc->kind == BcKind::flux && np == nv)
         for (int a = 0; a < nv; ++a)
           F[nu + a] += mass_scale * w * phi[a] * bc->value[0] * factor;

@@ -112,7 +112,9 @@ PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
     PetscCall(DMCreateLabel(dm, name.c_str()));
     PetscCall(DMGetLabel(dm, name.c_str(), &label));
     IS faces = nullptr;
-    if (faceSets) PetscCall(DMLabelGetStratumIS(faceSets, b.tag, &faces));
+    DMLabel groups; // face groups, or physical points and curves (supports)
+    PetscCall(DMGetLabel(dm, groupLabel(b.support_dim), &groups));
+    if (groups) PetscCall(DMLabelGetStratumIS(groups, b.tag, &faces));
     if (faces) {
       const PetscInt *idx;
       PetscInt n;

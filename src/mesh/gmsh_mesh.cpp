@@ -148,6 +148,60 @@ std::string meshGeometry(const std::string &geo, double size_factor, const MeshL
   return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log", limits.time_limit);
 }
 
+/// The supports' labels, as "Face Sets" holds the face groups: "Vertex Sets", the vertices of
+/// the physical points, and in 3D "Edge Sets", the edges of the physical curves, valued by
+/// their physical tag. PETSc 3.18's reader makes neither (its -dm_plex_gmsh_mark_vertices
+/// marks every vertex of every group, with one value each). A node of a point or line element
+/// is the vertex with its coordinates (the same numbers of the same file; the checked file has
+/// no coincident nodes). Called on the serial mesh: rank 0 holds every point.
+PetscErrorCode markSupports(DM dm, const MshSummary &msh)
+{
+  PetscInt vStart, vEnd, cdim, dim;
+  Vec coords;
+  PetscSection csec;
+  const PetscScalar *x;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateLabel(dm, "Vertex Sets")); // on every rank: distributed with the mesh
+  PetscCall(DMCreateLabel(dm, "Edge Sets"));
+  PetscCall(DMGetDimension(dm, &dim));
+  const bool lines = dim == 3 && !msh.lines.empty();
+  if (msh.points.empty() && !lines) PetscFunctionReturn(0);
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMGetCoordinateDim(dm, &cdim));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(VecGetArrayRead(coords, &x));
+  std::map<std::array<double, 3>, PetscInt> vertexAt;
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt off;
+    std::array<double, 3> p = {0, 0, 0};
+    PetscCall(PetscSectionGetOffset(csec, v, &off));
+    for (PetscInt k = 0; k < cdim; ++k)
+      p[k] = PetscRealPart(x[off + k]);
+    vertexAt[p] = v;
+  }
+  PetscCall(VecRestoreArrayRead(coords, &x));
+  auto find = [&](const double *q) {
+    std::array<double, 3> p = {q[0], cdim > 1 ? q[1] : 0.0, cdim > 2 ? q[2] : 0.0};
+    const auto it = vertexAt.find(p);
+    return it == vertexAt.end() ? (PetscInt)-1 : it->second;
+  };
+  for (const auto &[tag, p] : msh.points) {
+    const PetscInt v = find(p.data());
+    if (v >= 0) PetscCall(DMSetLabelValue(dm, "Vertex Sets", v, (PetscInt)tag));
+  }
+  for (const auto &[tag, ends] : lines ? msh.lines : decltype(msh.lines){}) {
+    const PetscInt v[2] = {find(&ends[0]), find(&ends[3])};
+    if (v[0] < 0 || v[1] < 0) continue;
+    const PetscInt *join;
+    PetscInt n;
+    PetscCall(DMPlexGetJoin(dm, 2, v, &n, &join));
+    if (n == 1) PetscCall(DMSetLabelValue(dm, "Edge Sets", join[0], (PetscInt)tag));
+    PetscCall(DMPlexRestoreJoin(dm, 2, v, &n, &join));
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_factor,
@@ -163,6 +217,7 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
   const long max_elements = limits.max_elements;
   std::string error, msh = file, note;
   std::vector<PhysicalName> found;
+  MshSummary summary; // rank 0's
   if (rank == 0) {
     struct stat st;
     const std::string what = "mesh file '" + file + "' (option -mesh)";
@@ -177,7 +232,6 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
     else if (!endsWith(file, ".msh"))
       error = what + ": expected a Gmsh .msh or .geo file";
     // Every .msh is checked before PETSc's reader sees it (that reader trusts the file).
-    MshSummary summary;
     if (error.empty()) error = checkGmshFile(msh, found, summary);
     if (error.empty() && summary.cells > max_elements)
       error = "mesh file '" + msh + "' has " + std::to_string(summary.cells) +
@@ -224,6 +278,7 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
     names->push_back(n);
   }
   PetscCall(DMPlexCreateGmshFromFile(comm, msh.c_str(), PETSC_TRUE, dm));
+  PetscCall(markSupports(*dm, summary));
   PetscInt d;
   PetscCall(DMGetDimension(*dm, &d));
   *dim = (int)d;

@@ -416,6 +416,15 @@ private:
     expectEnd("Nodes");
   }
 
+  /// A point or line element of a physical group: kept for the supports (MshSummary).
+  void support(long long type, long long physical, const std::vector<long long> &nodes)
+  {
+    if (type == 15) s_.points.push_back({physical, geometry_.coordinates(nodes[0])});
+    if (type != 1) return;
+    const auto &a = geometry_.coordinates(nodes[0]), &b = geometry_.coordinates(nodes[1]);
+    s_.lines.push_back({physical, {a[0], a[1], a[2], b[0], b[1], b[2]}});
+  }
+
   void element(long long tag, long long type, const std::vector<long long> &nodes,
                long long physical, bool binary)
   {
@@ -426,6 +435,7 @@ private:
              binary);
     const std::string why = geometry_.element(tag, type, nodes, physical);
     if (!why.empty()) fail(why, binary);
+    if (physical >= 0) support(type, physical, nodes);
     int dim = 0;
     nodesOfType(type, &dim);
     if (dim > s_.dim) s_.dim = dim, s_.cells = 0;
@@ -551,8 +561,10 @@ private:
           nodes[k] =
               s_.binary ? binSize("an element's node") : integer("an element's node", LLONG_MIN);
         element(tag, type, nodes, physical.empty() ? -1 : physical[0], s_.binary);
-        for (size_t k = 1; k < physical.size(); ++k)
+        for (size_t k = 1; k < physical.size(); ++k) {
           geometry_.usePhysical((int)dim, physical[k]); // the entity's other groups
+          support(type, physical[k], nodes);
+        }
       }
     }
     if (seen != total)

@@ -72,7 +72,8 @@ const char *const kRegionKeys[] = {"material",
                                    "friction_angle",
                                    "dilation_angle",
                                    "tension_cutoff"};
-const char *const kBoundaryQuantities[] = {"ux", "uy", "uz", "p", "p3", "traction", "flux"};
+const char *const kBoundaryQuantities[] = {"ux", "uy",       "uz",       "p",
+                                           "p3", "traction", "pressure", "flux"};
 const char *const kInterfaceKeys[] = {
     "surfaces",       "side1",       "KN",   "KT", "friction", "dilation_angle",
     "dilation_limit", "integration", "flow", "D0", "T1",       "T2"};
@@ -216,7 +217,7 @@ std::string checkFamily(const Family &f, const std::string &option, const SceneN
     return message + suggestion(closest(option, all));
   }
   for (const auto &g : names.mesh_names)
-    if (g.dim == f.mesh_dim && g.name == named)
+    if ((g.dim == f.mesh_dim || (f.prefix == "bc_" && g.dim == 0)) && g.name == named)
       return message + ": '" + named + "' is a " + f.what + " of the mesh; add it to " + f.list;
   // One entity of its kind is the one meant whatever the spelling ("sand" for "soil").
   std::string meant = f.names.size() == 1 ? f.names[0] : closest(named, f.names);

@@ -74,6 +74,27 @@ PetscErrorCode findPhysical(MPI_Comm comm, const std::vector<PhysicalName> &name
 
 namespace {
 
+/// A name of -boundaries: a face group (dimension dim - 1), else a physical point (dimension
+/// 0) or, in 3D, a physical curve (dimension 1): supports, prescribed displacements only.
+PetscErrorCode findBoundaryGroup(MPI_Comm comm, const std::vector<PhysicalName> &names, int dim,
+                                 const std::string &name, Boundary *b)
+{
+  PetscFunctionBeginUser;
+  for (int d : {dim - 1, 0, 1})
+    for (const auto &n : names)
+      if (n.dim == d && n.name == name && d < dim) {
+        b->tag = n.tag;
+        b->support_dim = d == dim - 1 ? -1 : d;
+        PetscFunctionReturn(0);
+      }
+  SETERRQ(comm, PETSC_ERR_USER_INPUT,
+          "-boundaries: boundary '%s' is not a physical group of dimension %d in the mesh, "
+          "nor a physical point%s; the mesh has: %s (physical points: %s%s%s)",
+          name.c_str(), dim - 1, dim == 3 ? " or curve" : "", joinNames(names, dim - 1).c_str(),
+          joinNames(names, 0).c_str(), dim == 3 ? "; curves: " : "",
+          dim == 3 ? joinNames(names, 1).c_str() : "");
+}
+
 /// A condition's time function (-bc_<b>_<q>_ramp or _table), in the boundary's section.
 PetscErrorCode readTimeFunction(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
                                 const std::string &option, TimeFunction &f)
@@ -126,6 +147,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
     PetscFunctionBeginUser;
     bc.boundary = b.name;
     bc.tag = b.tag;
+    bc.support_dim = b.support_dim;
     PetscCall(readTimeFunction(PetscOptionsObject, comm, bc.option, bc.time));
     out.push_back(bc);
     PetscFunctionReturn(0);
@@ -226,6 +248,28 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   {
     double v = 0.0;
     bool set = false;
+    PetscCall(condition("pressure",
+                        "normal pressure P [Pa] on the faces, t = -P n (positive pushes into "
+                        "the body; not the pore pressure, -bc_<b>_p)",
+                        true, &v, &set));
+    if (set) {
+      // Both load the same faces' equilibrium rows: one of them is the load meant.
+      for (const auto &c : out)
+        PetscCheck(!(c.boundary == b.name && c.kind == BcKind::traction), comm,
+                   PETSC_ERR_USER_INPUT,
+                   "%spressure and %straction on the same boundary '%s': give the load as one "
+                   "of them (a pressure is the traction -P n), or split the boundary in the mesh",
+                   p.c_str(), p.c_str(), b.name.c_str());
+      BoundaryCondition bc;
+      bc.kind = BcKind::normal_pressure;
+      bc.value = {v};
+      bc.option = p + "pressure";
+      PetscCall(add(bc));
+    }
+  }
+  {
+    double v = 0.0;
+    bool set = false;
     PetscCall(condition("flux", "outward Darcy flux q.n [m/s] (positive: water leaves)",
                         scene.hasPressure(), &v, &set));
     if (set) {
@@ -247,6 +291,18 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       PetscCall(add(bc));
     }
   }
+  // A physical point or curve is a support: it holds displacements, it takes no load (a load
+  // on a point or a line of a 3D body is of infinite pressure: the displacement beneath it is
+  // unbounded).
+  const char *support = b.support_dim == 0 ? "point" : "curve";
+  for (const auto &c : out)
+    PetscCheck(!(c.boundary == b.name && b.support_dim >= 0 && c.kind != BcKind::displacement),
+               comm, PETSC_ERR_USER_INPUT,
+               "%s: '%s' is a physical %s; a %s group carries prescribed displacements only "
+               "(%sux, _uy%s), a support that removes a rigid-body mode; loads, pressures and "
+               "fluxes need a face group",
+               c.option.c_str(), b.name.c_str(), support, support, p.c_str(),
+               scene.dim == 3 ? ", _uz" : "");
   PetscFunctionReturn(0);
 }
 
@@ -441,7 +497,8 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
              "missing option -regions: list the mesh regions (cell physical names: %s)",
              joinNames(names, dim).c_str());
   PetscCall(getStringList(PetscOptionsObject, "-boundaries",
-                          "the boundaries (face groups) the scene uses, comma-separated",
+                          "the boundaries (face groups; physical points, 3D curves: supports) the "
+                          "scene uses, comma-separated",
                           boundaries, &set));
   PetscCall(getStringList(PetscOptionsObject, "-interfaces",
                           "the zero-thickness interfaces, comma-separated", interfaces, &set));
@@ -460,7 +517,7 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   for (const auto &name : boundaries) {
     Boundary b;
     b.name = name;
-    PetscCall(findPhysical(comm, names, dim - 1, name, "-boundaries", "boundary", &b.tag));
+    PetscCall(findBoundaryGroup(comm, names, dim, name, &b));
     scene.boundaries.push_back(b);
   }
   PetscCall(checkOptionNames(comm, SceneNames{dim, regions, boundaries, interfaces, names}));
