@@ -48,9 +48,7 @@ PetscErrorCode checkElementOrder(MPI_Comm comm, const Scene &scene)
   PetscFunctionBeginUser;
   if (scene.displacement_order == 1) PetscFunctionReturn(0);
   std::string what;
-  if (!scene.interfaces.empty())
-    what = "interfaces (-interfaces)";
-  else if (scene.axisymmetric)
+  if (scene.axisymmetric)
     what = "-axisymmetric";
   else if (!scene.probes.empty())
     what = "probes (-probe_<name>)";
@@ -59,7 +57,7 @@ PetscErrorCode checkElementOrder(MPI_Comm comm, const Scene &scene)
       if (r.model == MaterialModel::mohr_coulomb) what = "plastic regions (Mohr-Coulomb)";
   PetscCheck(what.empty(), comm, PETSC_ERR_USER_INPUT,
              "-displacement_order %d: not available yet with %s; order 2 supports plane-strain "
-             "and 3D scenes of elastic and Biot regions without interfaces, plasticity, "
+             "and 3D scenes of elastic and Biot regions and interfaces, without plasticity, "
              "axisymmetry or probes (use -displacement_order 1)",
              scene.displacement_order, what.c_str());
   PetscFunctionReturn(0);
