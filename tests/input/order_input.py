@@ -25,7 +25,7 @@ CASES = {
                        expect=["-displacement_order quadratic", "expected a number"]),
     "order_misspelt": dict(args=["-displacement_ordr", "2"],
                            expect=["-displacement_ordr", "did you mean -displacement_order?"]),
-    "order2_interfaces_run": dict(scene=bad_input.JOINT_SCENE, args=ORDER + ["-ts_max_steps", "2"],
+    "order2_interfaces_run": dict(scene=bad_input.JOINT_SCENE, args=ORDER + ["-ts_max_time", "0.4"],
                                   ok=True, expect=["results in"]),
     "order2_nodal_triangles": dict(scene=PATCH_3D,
                                    args=ORDER + ["-interface_contact_integration", "nodal",
