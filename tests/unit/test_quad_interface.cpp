@@ -173,13 +173,12 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
     PetscFunctionReturn(0);
   };
   PetscCall(rates());
-  PetscCall(problem.interfaces().visit(
-      local, InterfaceRates{c.flow ? rate : nullptr, dt},
-      [&](int, int, PetscInt, const InterfacePointState &st) {
-        ++res->states[(int)st.response.state];
-        res->dilated += st.response.dilation > 0.0;
-        ++res->points;
-      }));
+  PetscCall(problem.interfaces().visit(local, InterfaceRates{c.flow ? rate : nullptr, dt},
+                                       [&](int, int, PetscInt, const InterfacePointState &st) {
+                                         ++res->states[(int)st.response.state];
+                                         res->dilated += st.response.dilation > 0.0;
+                                         ++res->points;
+                                       }));
   const double mass_scale = c.flow ? -dt * problem.massBalanceScale() : 1.0;
   const ResidualMode mode{mass_scale, true, dt};
   auto residual = [&](Vec Xg, Vec Fg) -> PetscErrorCode {
@@ -222,7 +221,9 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
   PetscCall(MatDenseGetArrayRead(Jd, &jd));
   PetscCall(poroseam::test_support::centralDifferences(
       X, Fp, Fm, residual,
-      [&](PetscInt j) { return field[j] == 0 ? 1e-11 : 1e-2; /* m, Pa: far from every kink */ },
+      [&](PetscInt j) {
+        return field[j] == 0 ? 1e-11 : 1e-2; /* m, Pa: far from every kink */
+      },
       [&](PetscInt i, PetscInt j, double fd) {
         double &err = res->max_error[field[i]][field[j]];
         double &ref = res->max_entry[field[i]][field[j]];
@@ -278,34 +279,73 @@ using S = physics::ContactState;
 INSTANTIATE_TEST_SUITE_P(
     Order2, QuadInterfaceJacobian,
     ::testing::Values(
-        QuadCase{"stick2d_gauss", "block_on_base_2d.geo", 2.0, "gauss", {1e-7, -1e-6, 0},
+        QuadCase{
+            "stick2d_gauss", "block_on_base_2d.geo", 2.0, "gauss", {1e-7, -1e-6, 0}, (int)S::stick},
+        QuadCase{
+            "slip2d_gauss", "block_on_base_2d.geo", 2.0, "gauss", {1e-5, -1e-6, 0}, (int)S::slip},
+        QuadCase{
+            "slip2d_nodal", "block_on_base_2d.geo", 2.0, "nodal", {-1e-5, -1e-6, 0}, (int)S::slip},
+        QuadCase{
+            "open2d_gauss", "block_on_base_2d.geo", 2.0, "gauss", {1e-5, 1e-6, 0}, (int)S::open},
+        QuadCase{"slip2d_tri_nodal_dilatant",
+                 "block_on_base_2d_tri.geo",
+                 2.0,
+                 "nodal",
+                 {1e-5, -1e-6, 0},
+                 (int)S::slip,
+                 false,
+                 1.0,
+                 "10"},
+        QuadCase{"stick3d_nodal",
+                 "block_on_base_3d.geo",
+                 12.0,
+                 "nodal",
+                 {1e-7, -5e-8, -1e-6},
                  (int)S::stick},
-        QuadCase{"slip2d_gauss", "block_on_base_2d.geo", 2.0, "gauss", {1e-5, -1e-6, 0},
-                 (int)S::slip},
-        QuadCase{"slip2d_nodal", "block_on_base_2d.geo", 2.0, "nodal", {-1e-5, -1e-6, 0},
-                 (int)S::slip},
-        QuadCase{"open2d_gauss", "block_on_base_2d.geo", 2.0, "gauss", {1e-5, 1e-6, 0},
+        QuadCase{"slip3d_gauss_dilatant",
+                 "block_on_base_3d.geo",
+                 12.0,
+                 "gauss",
+                 {1e-5, -7e-6, -1e-6},
+                 (int)S::slip,
+                 false,
+                 1.0,
+                 "10"},
+        QuadCase{"open3d_gauss",
+                 "block_on_base_3d.geo",
+                 12.0,
+                 "gauss",
+                 {1e-5, 2e-6, 1e-6},
                  (int)S::open},
-        QuadCase{"slip2d_tri_nodal_dilatant", "block_on_base_2d_tri.geo", 2.0, "nodal",
-                 {1e-5, -1e-6, 0}, (int)S::slip, false, 1.0, "10"},
-        QuadCase{"stick3d_nodal", "block_on_base_3d.geo", 12.0, "nodal", {1e-7, -5e-8, -1e-6},
-                 (int)S::stick},
-        QuadCase{"slip3d_gauss_dilatant", "block_on_base_3d.geo", 12.0, "gauss",
-                 {1e-5, -7e-6, -1e-6}, (int)S::slip, false, 1.0, "10"},
-        QuadCase{"open3d_gauss", "block_on_base_3d.geo", 12.0, "gauss", {1e-5, 2e-6, 1e-6},
-                 (int)S::open},
-        QuadCase{"slip3d_tet_gauss", "block_on_base_3d_tet.geo", 12.0, "gauss",
-                 {-6e-6, 9e-6, -1e-6}, (int)S::slip},
+        QuadCase{"slip3d_tet_gauss",
+                 "block_on_base_3d_tet.geo",
+                 12.0,
+                 "gauss",
+                 {-6e-6, 9e-6, -1e-6},
+                 (int)S::slip},
         // Flow: open (storage and conductivity follow the opening) and closed, sliding with
         // dilation; backward Euler and BDF2 rates.
         QuadCase{"flow_open2d", "block_on_base_2d.geo", 2.0, "gauss", {0, 2e-6, 0}, -1, true},
-        QuadCase{"flow_open2d_bdf2_nodal", "block_on_base_2d.geo", 2.0, "nodal", {0, 2e-6, 0}, -1,
-                 true, 1.5},
-        QuadCase{"flow_sliding2d_dilatant", "block_on_base_2d.geo", 2.0, "gauss",
-                 {1e-5, -2e-6, 0}, (int)S::slip, true, 1.0, "10"},
+        QuadCase{"flow_open2d_bdf2_nodal",
+                 "block_on_base_2d.geo",
+                 2.0,
+                 "nodal",
+                 {0, 2e-6, 0},
+                 -1,
+                 true,
+                 1.5},
+        QuadCase{"flow_sliding2d_dilatant",
+                 "block_on_base_2d.geo",
+                 2.0,
+                 "gauss",
+                 {1e-5, -2e-6, 0},
+                 (int)S::slip,
+                 true,
+                 1.0,
+                 "10"},
         QuadCase{"flow_open3d", "block_on_base_3d.geo", 12.0, "gauss", {0, 0, 2e-6}, -1, true},
-        QuadCase{"flow_open3d_tet", "block_on_base_3d_tet.geo", 12.0, "gauss", {0, 0, 2e-6}, -1,
-                 true}),
+        QuadCase{
+            "flow_open3d_tet", "block_on_base_3d_tet.geo", 12.0, "gauss", {0, 0, 2e-6}, -1, true}),
     [](const auto &info) { return std::string(info.param.name); });
 
 // Patch test of the kinematics: each body is given a quadratic displacement field at every
@@ -488,8 +528,7 @@ INSTANTIATE_TEST_SUITE_P(
         JumpCase{"open2d_gauss", "block_on_base_2d.geo", 1.0, "gauss", 1e-6, 1e-5, (int)S::open},
         JumpCase{"slip2d_tri_gauss", "block_on_base_2d_tri.geo", 1.0, "gauss", -1e-6, 1e-5,
                  (int)S::slip},
-        JumpCase{"stick3d_gauss", "block_on_base_3d.geo", 4.0, "gauss", -1e-6, 1e-7,
-                 (int)S::stick},
+        JumpCase{"stick3d_gauss", "block_on_base_3d.geo", 4.0, "gauss", -1e-6, 1e-7, (int)S::stick},
         JumpCase{"slip3d_nodal", "block_on_base_3d.geo", 4.0, "nodal", -1e-6, 1e-5, (int)S::slip},
         JumpCase{"open3d_tet_gauss", "block_on_base_3d_tet.geo", 4.0, "gauss", 1e-6, 1e-5,
                  (int)S::open},
