@@ -6,7 +6,8 @@ both bodies expand sideways alike, so the effective contact pressure must be q a
 integration point (relative 1e-8), with no shear. Both integration rules, and penalties from
 soft to very stiff: K_N h / E = 1e-2, 1, 1e2, 1e4 (h = 0.125 m, the element size), the range
 where Gauss integration of stiff interfaces is known to oscillate on distorted states.
-In 3D (patch_3d.opts) the element size is 0.25 m.
+In 3D (patch_3d.opts) the element size is 0.25 m. --order 2: quadratic bodies and interfaces
+(-displacement_order 2; on tetrahedra Gauss only, triangular faces have no nodal rule there).
 Reads the per-integration-point interface output (tests/support/interface_reader.py).
 """
 import argparse
