@@ -24,3 +24,8 @@ poroseam_scene_test(hydraulics.order2_poiseuille_tet "hydraulics;interface;order
                     hydraulics/poiseuille.py --mesh tet --order 2)
 poroseam_scene_test(hydraulics.order2_gap_storage "hydraulics;interface;order"
                     hydraulics/gap_storage.py --order 2)
+# A run stopped between slip and unloading and continued from its checkpoint equals the
+# uninterrupted run (the integration-point history of the quadratic cells), 2 ranks.
+poroseam_scene_test(restart.order2_interface_np2 "restart;interface;order;mpi"
+                    interface/quad_slide.py --restart --ranks 2)
+set_tests_properties(restart.order2_interface_np2 PROPERTIES PROCESSORS 2)
