@@ -180,14 +180,15 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         for (int j = 0; j < 3; ++j)
           st.frame[i][j] = cell.frame[i][j];
       double gap[3] = {0, 0, 0}, gap_rate[3] = {0, 0, 0};
+      // The gap from the nodes' jumps (not the difference of the two faces' displacements,
+      // which would lose digits to a large common motion).
       for (int a = 0; a < e.num_nodes; ++a)
         for (int d = 0; d < dim_; ++d) {
+          gap[d] += N[a] * (u[cell.u2[a] + d] - u[cell.u1[a] + d]);
+          if (flow) gap_rate[d] += N[a] * (udot[cell.u2[a] + d] - udot[cell.u1[a] + d]);
           st.displacement1[d] += N[a] * u[cell.u1[a] + d];
           st.displacement2[d] += N[a] * u[cell.u2[a] + d];
-          if (flow) gap_rate[d] += N[a] * (udot[cell.u2[a] + d] - udot[cell.u1[a] + d]);
         }
-      for (int d = 0; d < dim_; ++d)
-        gap[d] = st.displacement2[d] - st.displacement1[d];
       for (int a = 0; a < e.num_vertices; ++a)
         for (int d = 0; d < dim_; ++d)
           st.x[d] += phi[a] * x1[a * dim_ + d];
