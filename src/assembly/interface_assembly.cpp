@@ -111,7 +111,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
   PetscCall(VecGetArrayRead(local, &ua));
   if (rates.rate) PetscCall(VecGetArrayRead(rates.rate, &ra));
   PetscCall(VecGetArrayRead(coords, &ca));
-  std::vector<double> x1, u1, u2, u_closure, udot_closure;
+  std::vector<double> x1, u1, u2, u_closure, udot_closure, nodal_phi;
   const double g = scene_->gravity;
   for (size_t i = 0; i < cells_.size(); ++i) {
     const Cell &cell = cells_[i];
@@ -159,14 +159,16 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         if (in.nodal_integration) {
           const ReferenceElement &ge = elements_[cell.gauss_element];
           double lumped = 0.0;
+          // The nodal point q is node q: its function from the node basis.
+          nodal_phi.resize(ge.num_nodes);
           for (int k = 0; k < ge.num_quadrature; ++k) {
-            double r = 0.0, phi_q[8], xi[3];
+            double r = 0.0, xi[3];
             for (int a = 0; a < ge.num_vertices; ++a)
               r += ge.basis[k * ge.num_vertices + a] * x1[a * dim_];
             for (int d = 0; d < ge.dim; ++d)
               xi[d] = ge.quadrature_points[k * ge.dim + d];
-            ge.evaluate(xi, phi_q, nullptr);
-            lumped += surfaceWeight(ge, x1.data(), dim_, k) * phi_q[q] * 2.0 * M_PI * r;
+            ge.evaluateNodes(xi, nodal_phi.data(), nullptr);
+            lumped += surfaceWeight(ge, x1.data(), dim_, k) * nodal_phi[q] * 2.0 * M_PI * r;
           }
           st.weight = lumped;
         } else {
