@@ -24,8 +24,10 @@ struct InterfacePointState {
   /// Displacements of side 1 and side 2 at the same vertices (face_vertices x dim), for output.
   const double *face_displacement1 = nullptr;
   const double *face_displacement2 = nullptr;
-  const double *phi = nullptr; ///< the face's shape functions at the point (face_vertices)
+  const double *phi = nullptr; ///< the face's vertex shape functions at the point (face_vertices)
   double x[3] = {0, 0, 0};
+  /// Displacements of side 1 and side 2 at the point (node basis: exact at order 2 too).
+  double displacement1[3] = {0, 0, 0}, displacement2[3] = {0, 0, 0};
   double weight = 0.0;     ///< area (length in 2D) it stands for
   double frame[3][3];      ///< e1 (normal, side 1 -> 2), e2, e3
   double gap_normal = 0.0; ///< g_N [m]
@@ -96,9 +98,13 @@ private:
     PetscInt cell;
     int iface, surface, element;
     int gauss_element; ///< Gauss rule of the same face, for lumped axisymmetric nodal weights
-    /// Closure offsets per side-1 face vertex a: first displacement component on side 1 and
-    /// on side 2, pressure on side 1 and 2 (-1: that side is not porous), p3 (-1: no flow).
-    std::vector<int> u1, u2, p1, p2, p3;
+    /// Closure offsets of the first displacement component on side 1 and side 2 per node of
+    /// the face element's node basis (its vertices at order 1; P2 / Q2 nodes at order 2).
+    std::vector<int> u1, u2;
+    /// Per side-1 face vertex a: closure offsets of the pressure on side 1 and 2 (-1: that
+    /// side is not porous) and of p3 (-1: no flow), all linear (vertex basis); the offset of
+    /// its first coordinate in the coordinate closure; the node that sits on it.
+    std::vector<int> p1, p2, p3, x1, vertex_node;
     bool flow = false, porous1 = false, porous2 = false;
     /// Drained scene, interface without flow next to porous soil: the water in the gap keeps
     /// its initial (hydrostatic) pressure and pushes both faces, as p3 does with flow.

@@ -21,9 +21,11 @@ public:
   /// PetscDTSimplexQuadrature / PetscDTGaussTensorQuadrature, exact for polynomials of degree
   /// 2 * order on affine cells (the mass matrices of both bases).
   static PetscErrorCode create(DMPolytopeType type, ReferenceElement *element, int order = 1);
-  /// The linear element with the nodal (Newton-Cotes/Lobatto) rule: one point at every vertex,
-  /// equal weights. Exact for linear integrands; lumps interface tractions to the nodes.
-  static PetscErrorCode createNodal(DMPolytopeType type, ReferenceElement *element);
+  /// The element with the nodal (Newton-Cotes/Lobatto) rule: one point at every node, lumping
+  /// interface tractions to the nodes. Order 1: the vertices, equal weights (exact for linear
+  /// integrands). Order 2 (segments and quadrilaterals only): the nodes of P2 / Q2 with the
+  /// integrals of their functions as weights (Simpson, tensor Simpson).
+  static PetscErrorCode createNodal(DMPolytopeType type, ReferenceElement *element, int order = 1);
 
   DMPolytopeType type = DM_POLYTOPE_UNKNOWN;
   int dim = 0;

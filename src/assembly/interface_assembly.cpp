@@ -111,7 +111,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
   PetscCall(VecGetArrayRead(local, &ua));
   if (rates.rate) PetscCall(VecGetArrayRead(rates.rate, &ra));
   PetscCall(VecGetArrayRead(coords, &ca));
-  std::vector<double> x1, u1, u2, u_closure, udot_closure;
+  std::vector<double> x1, u1, u2, u_closure, udot_closure, nodal_phi;
   const double g = scene_->gravity;
   for (size_t i = 0; i < cells_.size(); ++i) {
     const Cell &cell = cells_[i];
@@ -127,19 +127,21 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
       gatherClosure(ra, closures_.local(i), n, udot_closure.data());
     }
     const double *u = u_closure.data(), *udot = udot_closure.data();
-    // Side-1 vertex coordinates: the coordinate closure lists vertices like the displacements.
+    // Side-1 vertex coordinates, and both faces' displacements at those vertices (output).
     const PetscInt *xc = closures_.coordinates(i);
     x1.resize(e.num_vertices * dim_);
     u1.resize(e.num_vertices * dim_);
     u2.resize(e.num_vertices * dim_);
     for (int a = 0; a < e.num_vertices; ++a)
       for (int d = 0; d < dim_; ++d) {
-        x1[a * dim_ + d] = ca[xc[cell.u1[a] + d]];
-        u1[a * dim_ + d] = u[cell.u1[a] + d];
-        u2[a * dim_ + d] = u[cell.u2[a] + d];
+        x1[a * dim_ + d] = ca[xc[cell.x1[a] + d]];
+        u1[a * dim_ + d] = u[cell.u1[cell.vertex_node[a]] + d];
+        u2[a * dim_ + d] = u[cell.u2[cell.vertex_node[a]] + d];
       }
     for (int q = 0; q < e.num_quadrature; ++q) {
+      // Vertex basis: geometry, pressures, p3. Node basis: displacements, the gap.
       const double *phi = &e.basis[q * e.num_vertices];
+      const double *N = &e.node_basis[q * e.num_nodes];
       InterfacePointState st;
       FlowPoint fp;
       st.point = q;
@@ -157,14 +159,16 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         if (in.nodal_integration) {
           const ReferenceElement &ge = elements_[cell.gauss_element];
           double lumped = 0.0;
+          // The nodal point q is node q: its function from the node basis.
+          nodal_phi.resize(ge.num_nodes);
           for (int k = 0; k < ge.num_quadrature; ++k) {
-            double r = 0.0, phi_q[8], xi[3];
+            double r = 0.0, xi[3];
             for (int a = 0; a < ge.num_vertices; ++a)
               r += ge.basis[k * ge.num_vertices + a] * x1[a * dim_];
             for (int d = 0; d < ge.dim; ++d)
               xi[d] = ge.quadrature_points[k * ge.dim + d];
-            ge.evaluate(xi, phi_q, nullptr);
-            lumped += surfaceWeight(ge, x1.data(), dim_, k) * phi_q[q] * 2.0 * M_PI * r;
+            ge.evaluateNodes(xi, nodal_phi.data(), nullptr);
+            lumped += surfaceWeight(ge, x1.data(), dim_, k) * nodal_phi[q] * 2.0 * M_PI * r;
           }
           st.weight = lumped;
         } else {
@@ -178,12 +182,18 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         for (int j = 0; j < 3; ++j)
           st.frame[i][j] = cell.frame[i][j];
       double gap[3] = {0, 0, 0}, gap_rate[3] = {0, 0, 0};
-      for (int a = 0; a < e.num_vertices; ++a)
+      // The gap from the nodes' jumps (not the difference of the two faces' displacements,
+      // which would lose digits to a large common motion).
+      for (int a = 0; a < e.num_nodes; ++a)
         for (int d = 0; d < dim_; ++d) {
-          gap[d] += phi[a] * (u[cell.u2[a] + d] - u[cell.u1[a] + d]);
-          if (flow) gap_rate[d] += phi[a] * (udot[cell.u2[a] + d] - udot[cell.u1[a] + d]);
-          st.x[d] += phi[a] * x1[a * dim_ + d];
+          gap[d] += N[a] * (u[cell.u2[a] + d] - u[cell.u1[a] + d]);
+          if (flow) gap_rate[d] += N[a] * (udot[cell.u2[a] + d] - udot[cell.u1[a] + d]);
+          st.displacement1[d] += N[a] * u[cell.u1[a] + d];
+          st.displacement2[d] += N[a] * u[cell.u2[a] + d];
         }
+      for (int a = 0; a < e.num_vertices; ++a)
+        for (int d = 0; d < dim_; ++d)
+          st.x[d] += phi[a] * x1[a * dim_ + d];
       double local_gap[3] = {0, 0, 0};
       for (int k = 0; k < dim_; ++k)
         for (int d = 0; d < dim_; ++d)
@@ -273,7 +283,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
           st.transversal_flux2 =
               physics::transversalFlux(in.transmissivity2, st.interface_pressure, p2);
       }
-      PetscCall(kernel(cell, q, phi, st, fp, T, n));
+      PetscCall(kernel(cell, q, phi, N, st, fp, T, n));
     }
   }
   PetscCall(VecRestoreArrayRead(coords, &ca));
@@ -300,21 +310,22 @@ PetscErrorCode InterfaceAssembly::residual(Vec local, const InterfaceRates &rate
     PetscFunctionReturn(0);
   };
   PetscCall(loop(local, rates,
-                 [&](const Cell &cell, int, const double *phi, const InterfacePointState &st,
-                     const FlowPoint &fp, const double[3][3], int n) -> PetscErrorCode {
+                 [&](const Cell &cell, int, const double *phi, const double *N,
+                     const InterfacePointState &st, const FlowPoint &fp, const double[3][3],
+                     int n) -> PetscErrorCode {
                    PetscFunctionBeginUser;
                    if (&cell != current) {
                      PetscCall(flush());
                      current = &cell;
                      F.assign(n, 0.0);
                    }
-                   const int nf = (int)cell.u1.size();
+                   const int nu = (int)cell.u1.size(), nf = (int)cell.p3.size();
                    const double w = st.weight;
                    // The interface pushes side 1 with t and side 2 with -t; residual = -force.
-                   for (int a = 0; a < nf; ++a)
+                   for (int a = 0; a < nu; ++a)
                      for (int d = 0; d < dim_; ++d) {
-                       F[cell.u1[a] + d] -= w * phi[a] * st.traction[d];
-                       F[cell.u2[a] + d] += w * phi[a] * st.traction[d];
+                       F[cell.u1[a] + d] -= w * N[a] * st.traction[d];
+                       F[cell.u2[a] + d] += w * N[a] * st.traction[d];
                      }
                    if (!st.flow) PetscFunctionReturn(0);
                    // Interface balance dh/dt + div q_l = f1 - f2 (weak form, volumetric), and
@@ -355,8 +366,9 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
     PetscFunctionReturn(0);
   };
   PetscCall(loop(local, rates,
-                 [&](const Cell &cell, int, const double *phi, const InterfacePointState &st,
-                     const FlowPoint &fp, const double T[3][3], int n) -> PetscErrorCode {
+                 [&](const Cell &cell, int, const double *phi, const double *N,
+                     const InterfacePointState &st, const FlowPoint &fp, const double T[3][3],
+                     int n) -> PetscErrorCode {
                    PetscFunctionBeginUser;
                    if (&cell != current) {
                      PetscCall(flush());
@@ -366,14 +378,14 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                    }
                    auto add = [&](int row, int col, double v) { K[(size_t)row * size + col] += v; };
                    const Interface &in = scene_->interfaces[cell.iface];
-                   const int nf = (int)cell.u1.size();
+                   const int nu = (int)cell.u1.size(), nf = (int)cell.p3.size();
                    const double w = st.weight;
                    const double *e1 = cell.frame[0];
-                   // Contact: R_1a = -w phi_a t(g), R_2a = +w phi_a t(g), g = sum phi_b (u_2b -
-                   // u_1b).
-                   for (int a = 0; a < nf; ++a)
-                     for (int b = 0; b < nf; ++b) {
-                       const double wab = w * phi[a] * phi[b];
+                   // Contact: R_1a = -w N_a t(g), R_2a = +w N_a t(g), g = sum N_b (u_2b - u_1b)
+                   // over the displacement nodes.
+                   for (int a = 0; a < nu; ++a)
+                     for (int b = 0; b < nu; ++b) {
+                       const double wab = w * N[a] * N[b];
                        const int rows[2] = {cell.u1[a], cell.u2[a]};
                        const int cols[2] = {cell.u1[b], cell.u2[b]};
                        const double sign[2] = {-1.0, 1.0};
@@ -407,19 +419,40 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                        dilating = dilating || fp.d_aperture_dilation[k] != 0.0;
                      }
                    const double inv_dt = rates.dt > 0.0 ? 1.0 / rates.dt : 0.0;
+                   // p3 (vertex basis) on both faces (node basis): R_u1 += w N p3 e1,
+                   // R_u2 -= w N p3 e1.
+                   for (int a = 0; a < nu; ++a)
+                     for (int b = 0; b < nf; ++b)
+                       for (int i = 0; i < dim_; ++i) {
+                         add(cell.u1[a] + i, cell.p3[b], w * N[a] * phi[b] * e1[i]);
+                         add(cell.u2[a] + i, cell.p3[b], -w * N[a] * phi[b] * e1[i]);
+                       }
+                   for (int a = 0; a < nf; ++a) {
+                     double gq = 0.0;
+                     for (int d = 0; d < dim_; ++d)
+                       gq += fp.grad_phi[a][d] * dq_dh[d];
+                     // Storage dh/dt and conductivity through the opening (rows: p3 at the
+                     // vertices; columns: the displacement nodes): d/du_2 = +, d/du_1 = -.
+                     for (int b = 0; b < nu; ++b) {
+                       const double du = ws * (d_storage * phi[a] - active * gq) * N[b];
+                       for (int j = 0; j < dim_; ++j) {
+                         add(cell.p3[a], cell.u2[b] + j, du * e1[j]);
+                         add(cell.p3[a], cell.u1[b] + j, -du * e1[j]);
+                       }
+                       if (!dilating) continue;
+                       const double dd = ws * (inv_dt * phi[a] - gq) * N[b];
+                       for (int j = 0; j < dim_; ++j) {
+                         add(cell.p3[a], cell.u2[b] + j, dd * dh_dilation[j]);
+                         add(cell.p3[a], cell.u1[b] + j, -dd * dh_dilation[j]);
+                       }
+                     }
+                   }
                    for (int a = 0; a < nf; ++a)
                      for (int b = 0; b < nf; ++b) {
                        const double pp = phi[a] * phi[b];
-                       double gg = 0.0, gq = 0.0;
-                       for (int d = 0; d < dim_; ++d) {
+                       double gg = 0.0;
+                       for (int d = 0; d < dim_; ++d)
                          gg += fp.grad_phi[a][d] * fp.grad_phi[b][d];
-                         gq += fp.grad_phi[a][d] * dq_dh[d];
-                       }
-                       // p3 on both faces: R_u1 += w phi p3 e1, R_u2 -= w phi p3 e1.
-                       for (int i = 0; i < dim_; ++i) {
-                         add(cell.u1[a] + i, cell.p3[b], w * pp * e1[i]);
-                         add(cell.u2[a] + i, cell.p3[b], -w * pp * e1[i]);
-                       }
                        // Interface balance row.
                        add(cell.p3[a], cell.p3[b],
                            ws * (fp.conductivity * gg + (in.transmissivity1 * cell.porous1 +
@@ -435,19 +468,6 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                          add(cell.p2[a], cell.p2[b], ws * in.transmissivity2 * pp);
                          add(cell.p2[a], cell.p3[b], -ws * in.transmissivity2 * pp);
                        }
-                       // Storage dh/dt and conductivity through the opening: d/du_2 = +, d/du_1 =
-                       // -.
-                       const double du = ws * (d_storage * pp - active * gq * phi[b]);
-                       for (int j = 0; j < dim_; ++j) {
-                         add(cell.p3[a], cell.u2[b] + j, du * e1[j]);
-                         add(cell.p3[a], cell.u1[b] + j, -du * e1[j]);
-                       }
-                       if (!dilating) continue;
-                       const double dd = ws * (inv_dt * pp - gq * phi[b]);
-                       for (int j = 0; j < dim_; ++j) {
-                         add(cell.p3[a], cell.u2[b] + j, dd * dh_dilation[j]);
-                         add(cell.p3[a], cell.u1[b] + j, -dd * dh_dilation[j]);
-                       }
                      }
                    PetscFunctionReturn(0);
                  }));
@@ -460,8 +480,9 @@ PetscErrorCode InterfaceAssembly::commit(Vec local)
   std::vector<physics::ContactHistory> updated = committed_;
   PetscFunctionBeginUser;
   PetscCall(loop(local, InterfaceRates{},
-                 [&](const Cell &cell, int q, const double *, const InterfacePointState &st,
-                     const FlowPoint &, const double[3][3], int) -> PetscErrorCode {
+                 [&](const Cell &cell, int q, const double *, const double *,
+                     const InterfacePointState &st, const FlowPoint &, const double[3][3],
+                     int) -> PetscErrorCode {
                    updated[cell.history + q] = st.response.updated;
                    return 0;
                  }));
@@ -502,15 +523,17 @@ PetscErrorCode InterfaceAssembly::stateChanges(Vec local, Vec local_end,
   std::vector<double> gaps(3 * committed_.size(), 0.0);
   PetscFunctionBeginUser;
   PetscCall(loop(local, InterfaceRates{},
-                 [&](const Cell &cell, int q, const double *, const InterfacePointState &st,
-                     const FlowPoint &, const double[3][3], int) -> PetscErrorCode {
+                 [&](const Cell &cell, int q, const double *, const double *,
+                     const InterfacePointState &st, const FlowPoint &, const double[3][3],
+                     int) -> PetscErrorCode {
                    double *g = &gaps[3 * (cell.history + q)];
                    g[0] = st.gap_normal, g[1] = st.gap_tangential[0], g[2] = st.gap_tangential[1];
                    return 0;
                  }));
   PetscCall(loop(local_end, InterfaceRates{},
-                 [&](const Cell &cell, int q, const double *, const InterfacePointState &st,
-                     const FlowPoint &, const double[3][3], int) -> PetscErrorCode {
+                 [&](const Cell &cell, int q, const double *, const double *,
+                     const InterfacePointState &st, const FlowPoint &, const double[3][3],
+                     int) -> PetscErrorCode {
                    const size_t h = cell.history + q;
                    const double *g = &gaps[3 * h];
                    const double d[3] = {st.gap_normal - g[0], st.gap_tangential[0] - g[1],
@@ -530,8 +553,9 @@ PetscErrorCode InterfaceAssembly::visit(
 {
   PetscFunctionBeginUser;
   PetscCall(loop(local, rates,
-                 [&](const Cell &cell, int, const double *, const InterfacePointState &st,
-                     const FlowPoint &, const double[3][3], int) -> PetscErrorCode {
+                 [&](const Cell &cell, int, const double *, const double *,
+                     const InterfacePointState &st, const FlowPoint &, const double[3][3],
+                     int) -> PetscErrorCode {
                    f(cell.iface, cell.surface, cell.cell, st);
                    return 0;
                  }));

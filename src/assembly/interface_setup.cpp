@@ -44,6 +44,49 @@ PetscErrorCode vertexCoordinates(DM dm, PetscInt v, int dim, double x[3])
   PetscFunctionReturn(0);
 }
 
+/// The points of `face`'s closure that carry displacement nodes (an entry in `offset`, the
+/// displacement offsets of the cohesive cell's closure) and their positions (centroids of their
+/// vertices): the face's vertices, and at order 2 its edges and a quadrilateral face itself.
+PetscErrorCode nodePoints(DM dm, PetscInt face, const std::map<PetscInt, int> &offset, int dim,
+                          std::vector<PetscInt> &points, std::vector<double> &centres)
+{
+  PetscInt n, *pts = nullptr;
+  std::vector<PetscInt> vertices;
+  PetscFunctionBeginUser;
+  points.clear();
+  centres.clear();
+  PetscCall(DMPlexGetTransitiveClosure(dm, face, PETSC_TRUE, &n, &pts));
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscInt p = pts[2 * k];
+    if (!offset.count(p)) continue;
+    PetscCall(closureVertices(dm, p, vertices));
+    double c[3] = {0, 0, 0}, x[3];
+    for (PetscInt v : vertices) {
+      PetscCall(vertexCoordinates(dm, v, dim, x));
+      for (int d = 0; d < dim; ++d)
+        c[d] += x[d] / (double)vertices.size();
+    }
+    points.push_back(p);
+    centres.insert(centres.end(), c, c + dim);
+  }
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, face, PETSC_TRUE, &n, &pts));
+  PetscFunctionReturn(0);
+}
+
+/// Index of the position in `centres` (dim each) nearest to x, -1 when there is none.
+int nearest(const std::vector<double> &centres, int dim, const double x[3])
+{
+  int best = -1;
+  double dmin = 1e300;
+  for (int k = 0; k < (int)centres.size() / dim; ++k) {
+    double d2 = 0.0;
+    for (int d = 0; d < dim; ++d)
+      d2 += std::pow(centres[k * dim + d] - x[d], 2);
+    if (d2 < dmin) dmin = d2, best = k;
+  }
+  return best;
+}
+
 void normalise(double v[3])
 {
   const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -74,6 +117,7 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
   std::map<std::pair<int, bool>, int> elementOf;
   PetscInt cStart, cEnd;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  std::string error;
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType t;
     PetscCall(DMPlexGetCellType(dm, c, &t));
@@ -93,13 +137,23 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
     const PetscInt face1 = cone[vside - 1], face2 = cone[2 - vside];
     DMPolytopeType ft;
     PetscCall(DMPlexGetCellType(dm, face1, &ft));
+    const int order = scene.displacement_order;
+    // Axisymmetric rings of quadratic faces (their lumped nodal weights) are not verified.
+    if (order > 1 && scene.axisymmetric && error.empty())
+      error = "interface '" + in.name + "': -axisymmetric interfaces are not available yet at " +
+              "-displacement_order 2 (use -displacement_order 1)";
+    if (order > 1 && in.nodal_integration && ft == DM_POLYTOPE_TRIANGLE && error.empty())
+      error = "-interface_" + in.name + "_integration nodal: at -displacement_order 2 the " +
+              "nodal rule of a triangular face (6 nodes of P2) gives its vertices zero weight, " +
+              "leaving them without a contact spring; use gauss (6 points) on triangular faces";
+    if (!error.empty()) continue;
     const auto key = std::make_pair((int)ft, in.nodal_integration);
     if (!elementOf.count(key)) {
       ReferenceElement e;
       if (in.nodal_integration)
-        PetscCall(ReferenceElement::createNodal(ft, &e));
+        PetscCall(ReferenceElement::createNodal(ft, &e, order));
       else
-        PetscCall(ReferenceElement::create(ft, &e));
+        PetscCall(ReferenceElement::create(ft, &e, order));
       elements_.push_back(e);
       elementOf[key] = (int)elements_.size() - 1;
     }
@@ -107,7 +161,7 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
     const auto gkey = std::make_pair((int)ft, false);
     if (!elementOf.count(gkey)) {
       ReferenceElement g;
-      PetscCall(ReferenceElement::create(ft, &g));
+      PetscCall(ReferenceElement::create(ft, &g, order));
       elements_.push_back(g);
       elementOf[gkey] = (int)elements_.size() - 1;
     }
@@ -115,17 +169,19 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
     const ReferenceElement &e = elements_[cell.element];
 
     // Closure offsets. PETSc orders a closure field by field, point by point: all
-    // displacements, then pressures, then interface pressures (lateral edges).
-    PetscSection sec;
+    // displacements, then pressures, then interface pressures (lateral edges). The coordinate
+    // closure lists the same points (vertices only carry coordinates).
+    PetscSection sec, csec;
     PetscCall(DMGetLocalSection(dm, &sec));
+    PetscCall(DMGetCoordinateSection(dm, &csec));
     PetscInt numFields;
     PetscCall(PetscSectionGetNumFields(sec, &numFields));
-    std::map<PetscInt, int> offset[3];
+    std::map<PetscInt, int> offset[3], coordinateOffset;
     std::vector<PetscInt> lateral;
     {
       PetscInt n, *pts = nullptr;
       PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
-      int running = 0;
+      int running = 0, xrunning = 0;
       for (PetscInt f = 0; f < numFields; ++f)
         for (PetscInt k = 0; k < n; ++k) {
           PetscInt dof;
@@ -133,7 +189,14 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
           if (dof) offset[f][pts[2 * k]] = running;
           running += (int)dof;
         }
+      PetscInt xStart, xEnd; // the coordinate section's chart holds the vertices only
+      PetscCall(PetscSectionGetChart(csec, &xStart, &xEnd));
       for (PetscInt k = 0; k < n; ++k) {
+        PetscInt dof = 0;
+        if (pts[2 * k] >= xStart && pts[2 * k] < xEnd)
+          PetscCall(PetscSectionGetDof(csec, pts[2 * k], &dof));
+        if (dof) coordinateOffset[pts[2 * k]] = xrunning;
+        xrunning += (int)dof;
         DMPolytopeType pt;
         PetscCall(DMPlexGetCellType(dm, pts[2 * k], &pt));
         if (pt == DM_POLYTOPE_POINT_PRISM_TENSOR) lateral.push_back(pts[2 * k]);
@@ -167,8 +230,7 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
           d2 += (y[d] - x1[a * dim_ + d]) * (y[d] - x1[a * dim_ + d]);
         if (d2 < best) best = d2, partner = v2[b];
       }
-      cell.u1.push_back(offsetOf(0, v1[a]));
-      cell.u2.push_back(offsetOf(0, partner));
+      cell.x1.push_back(coordinateOffset.count(v1[a]) ? coordinateOffset[v1[a]] : -1);
       cell.p1.push_back(offsetOf(1, v1[a]));
       cell.p2.push_back(offsetOf(1, partner));
       cell.porous1 = cell.porous1 && cell.p1.back() >= 0;
@@ -181,6 +243,54 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
       }
       cell.p3.push_back(p3);
       cell.flow = cell.flow && p3 >= 0;
+    }
+    // Displacement nodes of the face element (its node basis, closure order of the reference
+    // face), each matched by position to the point of each face that carries it: at order 1
+    // the vertices, at order 2 also the edges (midpoints) and a quadrilateral face (centre).
+    // The node's position is the vertex map at its reference coordinates; a point's is the
+    // centroid of its vertices (straight-sided faces).
+    {
+      std::vector<PetscInt> pts1, pts2;
+      std::vector<double> c1, c2;
+      PetscCall(nodePoints(dm, face1, offset[0], dim_, pts1, c1));
+      PetscCall(nodePoints(dm, face2, offset[0], dim_, pts2, c2));
+      std::vector<double> phi(e.num_vertices);
+      double size2 = 0.0;
+      for (size_t a = 1; a < v1.size(); ++a)
+        for (int d = 0; d < dim_; ++d)
+          size2 += std::pow(x1[a * dim_ + d] - x1[d], 2);
+      for (int a = 0; a < e.num_nodes; ++a) {
+        e.evaluate(&e.node_coords[a * e.dim], phi.data(), nullptr);
+        double X[3] = {0, 0, 0};
+        for (int b = 0; b < e.num_vertices; ++b)
+          for (int d = 0; d < dim_; ++d)
+            X[d] += phi[b] * x1[b * dim_ + d];
+        const int k1 = nearest(c1, dim_, X), k2 = nearest(c2, dim_, X);
+        double d1 = 0.0, d2 = 0.0;
+        for (int d = 0; d < dim_ && k1 >= 0 && k2 >= 0; ++d) {
+          d1 += std::pow(c1[k1 * dim_ + d] - X[d], 2);
+          d2 += std::pow(c2[k2 * dim_ + d] - X[d], 2);
+        }
+        PetscCheck(k1 >= 0 && k2 >= 0 && d1 <= 1e-16 * size2 && d2 <= 1e-16 * size2,
+                   PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                   "cohesive cell %" PetscInt_FMT ": no displacement node of its faces at node %d "
+                   "of the face element",
+                   c, a);
+        cell.u1.push_back(offset[0].at(pts1[k1]));
+        cell.u2.push_back(offset[0].at(pts2[k2]));
+      }
+      // The vertices among the nodes (output reports the faces' vertex displacements).
+      for (int b = 0; b < e.num_vertices; ++b) {
+        int found = -1;
+        for (int a = 0; a < e.num_nodes; ++a) {
+          double dist = 0.0;
+          for (int d = 0; d < e.dim; ++d)
+            dist += std::fabs(e.node_coords[a * e.dim + d] - e.vertex_coords[b * e.dim + d]);
+          if (dist < 1e-12) found = a;
+        }
+        PetscCheck(found >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "a face vertex is not a node");
+        cell.vertex_node.push_back(found);
+      }
     }
     // Local frame from cone[0]'s vertex order and the orientation found before distribution.
     {
@@ -248,6 +358,7 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
     }
     cells_.push_back(cell);
   }
+  PetscCall(checkOnAllRanks(PetscObjectComm((PetscObject)dm), error));
   std::vector<PetscInt> points;
   for (const Cell &cell : cells_)
     points.push_back(cell.cell);

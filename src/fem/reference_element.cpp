@@ -404,7 +404,7 @@ PetscErrorCode build(DMPolytopeType type, int order, bool nodal, ReferenceElemen
   e.vertex_coords = vertex.nodes;
   PetscCheck((int)vertex.count == e.num_vertices, PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "reference cell vertices");
-  if (nodal) {
+  if (nodal && order == 1) {
     PetscCall(setQuadrature(e, 1));
     double measure = 0.0;
     for (double w : e.quadrature_weights)
@@ -412,6 +412,27 @@ PetscErrorCode build(DMPolytopeType type, int order, bool nodal, ReferenceElemen
     e.num_quadrature = e.num_vertices;
     e.quadrature_points = e.vertex_coords;
     e.quadrature_weights.assign(e.num_vertices, measure / e.num_vertices);
+  } else if (nodal) {
+    // One point at every node of the node basis, weighted by the integral of its function
+    // (row-sum lumping, computed with the Gauss rule, exact): Simpson on a P2 segment, tensor
+    // Simpson (3 x 3 Lobatto) on a Q2 quadrilateral. Exact for the node basis's polynomials,
+    // so a uniform traction gives the consistent nodal forces. A P2 triangle's vertices would
+    // get weight zero (no contact spring there): refused.
+    PetscCheck(e.dim == 1 || !e.simplex, PETSC_COMM_SELF, PETSC_ERR_SUP,
+               "a nodal rule at order %d on %s would give its vertices zero weight", order,
+               DMPolytopeTypes[type]);
+    PetscCall(setQuadrature(e, order));
+    PetscCall(createBasis(type, e.dim, e.simplex, order, node));
+    std::vector<double> phi, dphi;
+    PetscCall(tabulate(node, e.dim, e.quadrature_points, phi, dphi));
+    std::vector<double> weights(node.count, 0.0);
+    for (int q = 0; q < e.num_quadrature; ++q)
+      for (int a = 0; a < node.count; ++a)
+        weights[a] += e.quadrature_weights[q] * phi[q * node.count + a];
+    PetscCall(PetscFEDestroy(&node.fe));
+    e.num_quadrature = node.count;
+    e.quadrature_points = node.nodes;
+    e.quadrature_weights = weights;
   } else {
     PetscCall(setQuadrature(e, order));
   }
@@ -445,10 +466,11 @@ PetscErrorCode ReferenceElement::create(DMPolytopeType type, ReferenceElement *e
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ReferenceElement::createNodal(DMPolytopeType type, ReferenceElement *element)
+PetscErrorCode ReferenceElement::createNodal(DMPolytopeType type, ReferenceElement *element,
+                                             int order)
 {
   PetscFunctionBeginUser;
-  PetscCall(build(type, 1, true, *element));
+  PetscCall(build(type, order, true, *element));
   PetscFunctionReturn(0);
 }
 

@@ -138,17 +138,13 @@ PetscErrorCode collect(const InterfaceAssembly &mech, int dim, Vec local,
           p.shear_traction[i] = 0.0;
         }
         p.weight = st.weight;
-        // The displacements of both faces at the point: the face's shape
-        // functions interpolate them like the gap (linear faces: the
-        // barycentric weights of x among the face's vertices).
-        for (int i = 0; i < 3; ++i)
-          p.displacement_minus[i] = p.displacement_plus[i] = 0.0;
-        if (st.face_displacement1 && st.face_displacement2 && st.phi)
-          for (int a = 0; a < st.face_vertices; ++a)
-            for (int i = 0; i < d; ++i) {
-              p.displacement_minus[i] += st.phi[a] * st.face_displacement1[a * d + i];
-              p.displacement_plus[i] += st.phi[a] * st.face_displacement2[a * d + i];
-            }
+        // The displacements of both faces at the point, interpolated like the gap (the
+        // displacement's node basis; linear faces: the barycentric weights of x among the
+        // face's vertices).
+        for (int i = 0; i < 3; ++i) {
+          p.displacement_minus[i] = i < d ? st.displacement1[i] : 0.0;
+          p.displacement_plus[i] = i < d ? st.displacement2[i] : 0.0;
+        }
         p.gap_normal = st.gap_normal;
         p.opening = st.opening;
         p.pressure = st.response.contact_pressure_effective;

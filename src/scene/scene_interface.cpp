@@ -84,7 +84,7 @@ PetscErrorCode readInterface(PetscOptionItems *PetscOptionsObject, MPI_Comm comm
   }
   std::string rule = "gauss";
   PetscCall(getString(PetscOptionsObject, p + "integration",
-                      "integration points: gauss, or nodal (Newton-Cotes/Lobatto at the vertices)",
+                      "integration points: gauss, or nodal (Newton-Cotes/Lobatto at the nodes)",
                       rule, nullptr));
   PetscCheck(rule == "gauss" || rule == "nodal", comm, PETSC_ERR_USER_INPUT,
              "%sintegration %s: expected 'gauss' or 'nodal'", p.c_str(), rule.c_str());

@@ -1,6 +1,6 @@
 """Poiseuille flow along a gap held at a fixed opening (docs/verification.md, interface flow).
 
-    poiseuille.py --mesh quad|tri|hex|tet [--ranks N]
+    poiseuille.py --mesh quad|tri|hex|tet [--ranks N] [--order 2]
 
 Two near-rigid impervious bodies (E = 1e20 Pa, T1 = T2 = 0); the block is pulled up by 1e-5 m
 at the first step so that h = D0 + 1e-5 = 2e-5 m, and p3 is prescribed at the two ends of the
@@ -18,6 +18,8 @@ Checks (step 2):
     storage rate (p3 linear plus the parabola it causes)                 (relative 1e-8)
 The tolerance 1e-8 is the brief's; the bodies take p3 H / E ~ 1e-16 m of the opening and
 Newton stops at 1e-9 of the force scale, both far below it.
+--order 2: quadratic bodies and interfaces (-displacement_order 2); p3 stays linear, so the same
+closed forms hold to the same tolerance.
 Scenes: tests/interface/poiseuille_2d.opts (2D; triangles: meshes/block_on_base_2d_tri.geo),
 tests/hydraulics/poiseuille_3d.opts (3D; tetrahedra: meshes/block_on_base_3d_tet.geo).
 """
@@ -48,13 +50,16 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--mesh", choices=sorted(MESHES), default="quad")
     ap.add_argument("--ranks", type=int, default=1)
+    ap.add_argument("--order", type=int, choices=(1, 2), default=1)
     args = ap.parse_args()
     opts, mesh = MESHES[args.mesh]
-    out = common.output_dir(f"hydraulics_poiseuille_{args.mesh}_np{args.ranks}")
+    order = f"_order{args.order}" if args.order > 1 else ""
+    out = common.output_dir(f"hydraulics_poiseuille_{args.mesh}{order}_np{args.ranks}")
     extra = ["-output_fields_every", 0] + (["-mesh", mesh] if mesh else [])
+    extra += ["-displacement_order", args.order] if args.order > 1 else []
     common.run(opts, out, extra, ranks=args.ranks)
     ts = common.read_timeseries(out)
-    chk = common.Checks(f"Poiseuille along a gap, {args.mesh} mesh, {args.ranks} rank(s)")
+    chk = common.Checks(f"Poiseuille along a gap, {args.mesh} mesh{order}, {args.ranks} rank(s)")
     i = common.step_index(ts, 3.0)  # step 1 opens the gap, step 2 settles p3 on the bodies
     q_exact = H**3 / (12.0 * MU_W) * (P_LEFT - P_RIGHT) / L
     left = common.column(ts, "base_left.interface_outflow")[i]

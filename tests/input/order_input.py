@@ -14,6 +14,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bad_input  # noqa: E402  (its runner, checks and scenes)
 
 ORDER = ["-displacement_order", "2"]
+# a block pressed on a base through an interface, 3D (tetrahedra with -mesh ..._tet.geo)
+PATCH_3D = os.path.join(bad_input.SOURCE, "tests", "interface", "patch_3d.opts")
 CASES = {
     "order_three": dict(args=["-displacement_order", "3"],
                         expect=["-displacement_order 3", "expected 1 (linear) or 2"]),
@@ -23,9 +25,6 @@ CASES = {
                        expect=["-displacement_order quadratic", "expected a number"]),
     "order_misspelt": dict(args=["-displacement_ordr", "2"],
                            expect=["-displacement_ordr", "did you mean -displacement_order?"]),
-    "order2_interfaces": dict(scene=bad_input.JOINT_SCENE, args=ORDER,
-                              expect=["-displacement_order 2", "interfaces (-interfaces)",
-                                      "use -displacement_order 1"]),
     # order 2 with what it no longer refuses (tests/order2_physics_tests.cmake verifies them)
     "order2_plastic_runs": dict(args=ORDER + bad_input.MOHR_COULOMB + ["-ts_max_time", "0.4"],
                                 ok=True, expect=["results in"]),
@@ -33,6 +32,18 @@ CASES = {
                                      ok=True, expect=["results in"]),
     "order2_probes_runs_np2": dict(args=ORDER + ["-probe_top", "0.05,1", "-ts_max_time", "0.4"],
                                    ok=True, expect=["results in"], ranks=2),
+    "order2_interfaces_run": dict(scene=bad_input.JOINT_SCENE, args=ORDER + ["-ts_max_time", "0.4"],
+                                  ok=True, expect=["results in"]),
+    "order2_nodal_triangles": dict(scene=PATCH_3D,
+                                   args=ORDER + ["-interface_contact_integration", "nodal",
+                                                 "-mesh", "meshes/block_on_base_3d_tet.geo"],
+                                   expect=["-interface_contact_integration nodal",
+                                           "triangular face", "use gauss"]),
+    "order2_nodal_triangles_np2": dict(scene=PATCH_3D,
+                                       args=ORDER + ["-interface_contact_integration", "nodal",
+                                                     "-mesh", "meshes/block_on_base_3d_tet.geo"],
+                                       expect=["-interface_contact_integration nodal",
+                                               "triangular face", "use gauss"], ranks=2),
     "order2_fieldsplit": dict(args=ORDER + ["-ksp_type", "fgmres", "-pc_type", "fieldsplit"],
                               expect=["-displacement_order 2", "fieldsplit", "-solver_preset direct"]),
     "order2_runs": dict(args=ORDER + ["-ts_max_time", "0.4"], ok=True, expect=["results in"]),

@@ -6,7 +6,8 @@ both bodies expand sideways alike, so the effective contact pressure must be q a
 integration point (relative 1e-8), with no shear. Both integration rules, and penalties from
 soft to very stiff: K_N h / E = 1e-2, 1, 1e2, 1e4 (h = 0.125 m, the element size), the range
 where Gauss integration of stiff interfaces is known to oscillate on distorted states.
-In 3D (patch_3d.opts) the element size is 0.25 m.
+In 3D (patch_3d.opts) the element size is 0.25 m. --order 2: quadratic bodies and interfaces
+(-displacement_order 2; on tetrahedra Gauss only, triangular faces have no nodal rule there).
 Reads the per-integration-point interface output (tests/support/interface_reader.py).
 """
 import argparse
@@ -46,21 +47,28 @@ def main():
     ap.add_argument("--mesh", default=None, help="another mesh of the same geometry (triangles, tetrahedra)")
     ap.add_argument("--axisymmetric", action="store_true",
                     help="2D mesh as an axisymmetric solid cylinder (x = r): interface force q pi R^2")
+    ap.add_argument("--order", type=int, choices=(1, 2), default=1,
+                    help="-displacement_order (2: quadratic bodies and interfaces)")
     ap.add_argument("--parts", action="store_true",
                     help="the contact in two named parts: forces per part and their sum")
     args = ap.parse_args()
     if args.parts:
         return parts(args)
     scene = os.path.join(HERE, f"patch_{args.dim}d.opts")
-    chk = common.Checks(f"interface patch test {args.dim}D{' axisymmetric' if args.axisymmetric else ''}, "
+    chk = common.Checks(f"interface patch test {args.dim}D{' axisymmetric' if args.axisymmetric else ''}"
+                        f"{', order 2' if args.order == 2 else ''}, "
                         f"{args.mesh or 'default mesh'}, {args.ranks} rank(s)")
     worst = 0.0
-    for rule in ("gauss", "nodal"):
+    triangles = args.mesh and ("tri" in args.mesh or "tet" in args.mesh)
+    # At order 2 a triangular face has no nodal rule (its vertices would weigh nothing).
+    rules = ("gauss",) if args.order == 2 and triangles and args.dim == 3 else ("gauss", "nodal")
+    for rule in rules:
         for ratio in (1e-2, 1.0, 1e2, 1e4):
             kn = ratio * E / (0.125 if args.dim == 2 else 0.25)
             # the mesh in the name: ctest runs the same case on other meshes in parallel
             mesh = os.path.splitext(os.path.basename(args.mesh))[0] if args.mesh else "default"
-            out = common.output_dir(f"patch_{args.dim}d{'_axi' if args.axisymmetric else ''}_{mesh}_{rule}_{ratio:g}_np{args.ranks}")
+            order = f"_order{args.order}" if args.order > 1 else ""
+            out = common.output_dir(f"patch_{args.dim}d{'_axi' if args.axisymmetric else ''}{order}_{mesh}_{rule}_{ratio:g}_np{args.ranks}")
             extra = ["-interface_contact_integration", rule, "-interface_contact_KN", kn,
                      "-interface_contact_KT", kn, "-region_base_nu", 0.3, "-region_block_nu", 0.3,
                      "-output_fields_every", 1]
@@ -68,6 +76,8 @@ def main():
                 extra += ["-mesh", args.mesh]
             if args.axisymmetric:
                 extra += ["-axisymmetric"]  # the left sides (x = 0) are the axis: ux = 0 there
+            if args.order > 1:
+                extra += ["-displacement_order", args.order]
             common.run(scene, out, extra, ranks=args.ranks)
             data = read_interfaces(out)
             p = data.point_fields[-1]["contact_pressure_effective"]
