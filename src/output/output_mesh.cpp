@@ -198,6 +198,13 @@ PetscErrorCode OutputMesh::build(DM dm, PetscInt dispField)
     PetscInt anyGlobal;
     PetscCall(MPIU_Allreduce(&any, &anyGlobal, 1, MPIU_INT, MPI_MAX, comm));
     quadratic = anyGlobal > 0;
+    // The owner of a point need not hold a bulk cell around it (a face of an interface whose
+    // cohesive cell went to another rank than the bulk cell): tell the owners.
+    std::vector<PetscInt> mark(bulkNode.begin(), bulkNode.end()), ownerMark(mark);
+    PetscCall(PetscSFReduceBegin(sf, MPIU_INT, mark.data(), ownerMark.data(), MPI_MAX));
+    PetscCall(PetscSFReduceEnd(sf, MPIU_INT, mark.data(), ownerMark.data(), MPI_MAX));
+    for (PetscInt p = pStart; p < pEnd; ++p)
+      bulkNode[p] = (char)(ownerMark[p] > 0);
   }
   nodesPerCell = corners;
   if (quadratic) {
