@@ -129,6 +129,9 @@ struct Scene {
 
   std::string output_dir = "output";
   int output_every = 1; ///< field output every n steps, 0 for none
+  /// Interface output (interfaces.h5) every n steps, 0 for none: by default every step while
+  /// fields are written (interface data is small; the mobilisation needs every step).
+  int interface_output_every = 1;
   std::vector<Probe> probes;
 
   bool hasPressure() const;

@@ -13,6 +13,7 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/time_integration.hpp"
 #include "poroseam/time_series.hpp"
+#include "poroseam/time_to_finish.hpp"
 
 #include "progress_line.hpp"
 #include "rolling_checkpoint.hpp"
@@ -100,6 +101,10 @@ struct Run {
   ProgressLine progress_line;
   bool step_abandoned = false;
   double accepted_next_dt = 0.0;
+  /// Step rejections already announced by a cut-back line (cut_back_line.cpp).
+  PetscInt announced_rejects = 0;
+  /// The wall time still needed, on the step line (time_to_finish.hpp).
+  TimeToFinish time_to_finish;
 };
 
 inline PetscErrorCode currentDt(Run &run, double *dt)
@@ -160,6 +165,12 @@ PetscErrorCode stopDuringStep(Run &run, SNESConvergedReason *reason);
 /// After TSSolve: a step abandoned by a stop leaves X and the step size as after the last
 /// accepted step.
 PetscErrorCode restoreAbandonedStep(Run &run, Vec X);
+
+// cut_back_line.cpp: a cut-back says so as it happens.
+
+/// TS pre-stage hook: after a rejected attempt, rank 0 prints one line naming the step, why
+/// the attempt failed, its dt and the dt of the retry. No communication.
+PetscErrorCode announceCutBack(TS ts, PetscReal stage_time);
 
 // run_ending.cpp: how the run ended.
 

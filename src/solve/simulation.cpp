@@ -110,7 +110,7 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
 }
 
 /// One row of timeseries.csv and, every output_every steps and at the `last` step of the run,
-/// the fields.
+/// the fields; the interfaces likewise every interface_output_every steps.
 PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
                           PetscInt ksp, PetscInt rejected, double wall, bool last = false)
 {
@@ -126,13 +126,15 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
                              resultants, interface, probes));
   // The final state always: after cut-backs the step count need not be a multiple of
   // output_every (a run to 3000 s ended with its last field at 2920 s).
-  if (run.scene.output_every > 0 && (run.step % run.scene.output_every == 0 || last)) {
+  auto due = [&](int every) { return every > 0 && (run.step % every == 0 || last); };
+  if (due(run.scene.output_every)) {
     CellFields cells;
     PetscCall(run.problem.cellFields(local, cells));
     PetscCall(run.fields.write(t, local, run.initial, &cells));
+  }
+  if (due(run.scene.interface_output_every))
     PetscCall(
         run.interface_fields.write(t, run.problem.interfaces(), local, InterfaceRates{rate, dt}));
-  }
   PetscCall(endLogEvent(run.events.output));
   PetscFunctionReturn(0);
 }
@@ -408,6 +410,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(TSAdaptSetScaleSolveFailed(adapt, 0.5));
   PetscCall(TSSetPreStep(run.ts, landOnFinalTime));
   PetscCall(TSSetPostStep(run.ts, postStep));
+  PetscCall(TSSetPreStage(run.ts, announceCutBack)); // a cut-back says so as it happens
   SNES snes;
   PetscCall(TSGetSNES(run.ts, &snes));
   PetscCall(SNESSetType(snes, SNESNEWTONLS));
@@ -530,6 +533,9 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
       run.fields.declareCellFields(declared);
     }
     PetscCall(run.fields.writeRegions(cells, regions, names));
+  }
+  if (run.scene.interface_output_every > 0) {
+    const std::vector<double> *times = restart.restart ? &resumed.interface_output_times : nullptr;
     PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir, times));
   }
   PetscCall(endLogEvent(run.events.output));
