@@ -4,3 +4,4 @@ poroseam_scene_test(polish.interface_output_interval "polish;outputs;interface;r
                     polish/interface_interval.py)
 poroseam_scene_test(polish.cut_back_lines "polish;cutback;mpi" polish/cut_back_lines.py)
 set_tests_properties(polish.cut_back_lines PROPERTIES PROCESSORS 2)
+poroseam_scene_test(polish.help_listing "polish;input" polish/help_listing.py)
