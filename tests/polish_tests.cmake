@@ -5,3 +5,4 @@ poroseam_scene_test(polish.interface_output_interval "polish;outputs;interface;r
 poroseam_scene_test(polish.cut_back_lines "polish;cutback;mpi" polish/cut_back_lines.py)
 set_tests_properties(polish.cut_back_lines PROPERTIES PROCESSORS 2)
 poroseam_scene_test(polish.help_listing "polish;input" polish/help_listing.py)
+poroseam_scene_test(polish.steady_pressure "polish;outputs;physics" polish/steady_pressure.py)

@@ -17,6 +17,7 @@
 
 #include "progress_line.hpp"
 #include "rolling_checkpoint.hpp"
+#include "steady_pressure.hpp"
 #include "stop_request.hpp"
 
 #include <petscts.h>
@@ -48,6 +49,7 @@ struct Run {
   /// While set (postStep), the residual copies the integrator's local rate here.
   Vec capture_rate = nullptr;
   Vec initial = nullptr; ///< local initial state
+  SteadyPressure steady;  ///< the steady pore pressure of the outputs
   std::vector<BoundaryDofs> boundary_dofs;
   /// Per interface: its prescribed interface-pressure dofs, where water leaves along it.
   std::vector<std::vector<PetscInt>> interface_end_dofs;

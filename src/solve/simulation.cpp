@@ -120,19 +120,42 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
   PetscCall(boundaryResultants(run, t, dt, local, rate, resultants));
   PetscCall(interfaceResultants(run, local, InterfaceRates{rate, dt}, interface));
   PetscCall(run.probes.evaluate(local, probes));
+  // The steady pore pressure (steady_pressure.hpp), for the probes and the fields.
+  const bool fields_due =
+      run.scene.output_every > 0 && (run.step % run.scene.output_every == 0 || last);
+  Vec steady = nullptr;
+  if (fields_due || !run.scene.probes.empty()) {
+    SNES snes;
+    Mat J;
+    PetscCall(TSGetSNES(run.ts, &snes));
+    PetscCall(SNESGetJacobian(snes, nullptr, &J, nullptr, nullptr));
+    PetscCall(run.steady.compute(run.problem, t, local, J, &steady));
+  }
+  if (steady && !run.scene.probes.empty()) {
+    std::vector<double> at_steady, both;
+    PetscCall(run.probes.evaluate(steady, at_steady));
+    const size_t per = run.probes.valuesPerProbe();
+    for (size_t i = 0; i < probes.size(); i += per) {
+      both.insert(both.end(), probes.begin() + i, probes.begin() + i + per);
+      const double p = probes[i + per - 1], p_steady = at_steady[i + per - 1];
+      both.push_back(p_steady);
+      both.push_back(p - p_steady);
+    }
+    probes.swap(both);
+  }
   PetscCall(run.series.write(run.scene,
                              StepRow{run.step, t, dt, run.problem.loadFactor(t), (int)newton,
                                      (int)ksp, (int)rejected, wall},
                              resultants, interface, probes));
   // The final state always: after cut-backs the step count need not be a multiple of
   // output_every (a run to 3000 s ended with its last field at 2920 s).
-  auto due = [&](int every) { return every > 0 && (run.step % every == 0 || last); };
-  if (due(run.scene.output_every)) {
+  if (fields_due) {
     CellFields cells;
     PetscCall(run.problem.cellFields(local, cells));
-    PetscCall(run.fields.write(t, local, run.initial, &cells));
+    PetscCall(run.fields.write(t, local, steady ? steady : run.initial, &cells));
   }
-  if (due(run.scene.interface_output_every))
+  const int interface_every = run.scene.interface_output_every;
+  if (interface_every > 0 && (run.step % interface_every == 0 || last))
     PetscCall(
         run.interface_fields.write(t, run.problem.interfaces(), local, InterfaceRates{rate, dt}));
   PetscCall(endLogEvent(run.events.output));
@@ -296,6 +319,7 @@ PetscErrorCode releaseRun(Run &run, Vec *X)
   PetscCall(VecDestroy(X));
   PetscCall(VecDestroy(&run.previous));
   PetscCall(VecDestroy(&run.jacobian_diagonal));
+  PetscCall(run.steady.destroy());
   PetscCall(VecDestroy(&run.initial));
   PetscCall(run.time.destroy());
   PetscCall(run.problem.release());
@@ -381,6 +405,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(DMCreateLocalVector(run.dm, &run.previous));
   PetscCall(VecDuplicate(run.previous, &run.initial));
   PetscCall(run.problem.initialState(run.initial));
+  PetscCall(run.steady.setup(run.dm, run.scene, run.initial));
   PetscCall(VecCopy(run.initial, run.previous));
   Vec X;
   PetscCall(DMCreateGlobalVector(run.dm, &X));
