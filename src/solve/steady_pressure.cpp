@@ -1,6 +1,7 @@
 #include "steady_pressure.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace poroseam {
@@ -143,13 +144,16 @@ PetscErrorCode SteadyPressure::compute(const Problem &problem, double t, Vec loc
     bool solved = false;
     PetscCall(solve(problem, t, local, J, &solved));
     if (!solved) {
-      if (!warned_)
+      if (!warned_) {
+        char when[32];
+        std::snprintf(when, sizeof when, "%g", t);
         PetscCall(PetscPrintf(PetscObjectComm((PetscObject)dm_),
-                              "steady pore pressure: the flow problem at t = %g s is singular (a "
-                              "region without permeability, or water no prescribed pressure "
+                              "steady pore pressure: the flow problem at t = %s s is singular (a "
+                              "region without permeability, or water that no prescribed pressure "
                               "reaches): steady_pressure and excess_pressure use the initial "
                               "pressure instead\n",
-                              t));
+                              when));
+      }
       warned_ = true;
       defined_ = false;
       *steady = initial_;
