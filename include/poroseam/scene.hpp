@@ -129,8 +129,7 @@ struct Scene {
 
   std::string output_dir = "output";
   int output_every = 1; ///< field output every n steps, 0 for none
-  /// Interface output (interfaces.h5) every n steps, 0 for none: by default every step while
-  /// fields are written (interface data is small; the mobilisation needs every step).
+  /// Interface output (interfaces.h5) every n steps, 0 for none (default: output_every).
   int interface_output_every = 1;
   std::vector<Probe> probes;
 

@@ -63,12 +63,12 @@ PetscErrorCode readOutputOptions(MPI_Comm comm, Scene &scene)
   PetscCheck(every >= 0 && every == std::floor(every), comm, PETSC_ERR_USER_INPUT,
              "-output_fields_every %g: expected a whole number >= 0", every);
   scene.output_every = (int)every;
-  // Interface output: every step by default while fields are written (a few kB per step on
-  // the caisson; the mobilisation of friction happens within a few steps), none without.
-  double interface_every = scene.output_every > 0 ? 1 : 0;
+  // Interface output: with the fields unless a scene asks for more (the caisson scenes: every
+  // step, for the mobilisation of friction within a few steps).
+  double interface_every = scene.output_every;
   PetscCall(getReal(PetscOptionsObject, "-output_interfaces_every",
-                    "HDF5/XDMF interface output every N steps (0: none; default 1 while fields "
-                    "are written, 0 with -output_fields_every 0)",
+                    "HDF5/XDMF interface output every N steps (0: none; default: as "
+                    "-output_fields_every)",
                     &interface_every, nullptr));
   PetscCheck(interface_every >= 0 && interface_every == std::floor(interface_every), comm,
              PETSC_ERR_USER_INPUT, "-output_interfaces_every %g: expected a whole number >= 0",
