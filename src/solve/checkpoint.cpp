@@ -395,8 +395,8 @@ PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *re
                                "checkpoint",
                                "docs/checkpoints.md", "(none)", dir, sizeof(dir), &set));
   PetscCall(PetscOptionsInt("-restart_step",
-                            "with -restart: continue from this step's checkpoint (default: the "
-                            "latest)",
+                            "with -restart: continue from this step's checkpoint (-1, the "
+                            "default: the latest)",
                             "docs/checkpoints.md", step, &step, &step_set));
   PetscOptionsEnd();
   PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT,
