@@ -168,6 +168,13 @@ PetscErrorCode stopDuringStep(Run &run, SNESConvergedReason *reason);
 /// accepted step.
 PetscErrorCode restoreAbandonedStep(Run &run, Vec X);
 
+// step_record.cpp: what one step leaves in the outputs.
+
+/// One row of timeseries.csv and, every output_every steps and at the `last` step of the run,
+/// the fields; the interfaces likewise every interface_output_every steps.
+PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
+                          PetscInt ksp, PetscInt rejected, double wall, bool last = false);
+
 // cut_back_line.cpp: a cut-back says so as it happens.
 
 /// TS pre-stage hook: after a rejected attempt, rank 0 prints one line naming the step, why
