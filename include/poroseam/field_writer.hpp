@@ -39,9 +39,11 @@ public:
   void declareCellFields(const CellFields &cells);
   /// Times written so far (for checkpoints).
   std::vector<double> times() const;
-  /// Appends one time: displacement, pressure (if any) and excess_pressure = pressure -
-  /// initial_pressure. `local_solution` and `local_initial` are local vectors of solution_dm
-  /// (with boundary values inserted); `local_initial` may be nullptr (then excess = pressure).
+  /// Appends one time: displacement, pressure (if any), steady_pressure (the pressure of
+  /// `local_initial`: the run passes the steady pore pressure, docs/outputs.md) and
+  /// excess_pressure = pressure - steady_pressure. `local_solution` and `local_initial` are
+  /// local vectors of solution_dm (with boundary values inserted); `local_initial` may be
+  /// nullptr (then excess = pressure, steady = 0).
   /// `cells` (may be nullptr) adds per-cell quantities as /cell_fields/<name>/<step> and
   /// XDMF Cell attributes; every write of a run must give the same names.
   PetscErrorCode write(double time, Vec local_solution, Vec local_initial,

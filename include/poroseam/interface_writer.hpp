@@ -49,6 +49,8 @@ public:
   /// once without interfaces.
   PetscErrorCode write(double time, const InterfaceAssembly &mech, Vec local_solution,
                        const InterfaceRates &rates = InterfaceRates{});
+  /// The times written so far (a resumed writer's included): what a checkpoint keeps.
+  std::vector<double> times() const;
   /// Closes the HDF5 file and finishes the XDMF index (also called by the destructor).
   PetscErrorCode close();
 

@@ -2,7 +2,7 @@
 // (scene, mesh, partitioning, time stepping, Newton, linear solver), so that PETSc's -help
 // lists each option with its current value and description, and stops before the first step.
 // Nothing is written to the output directory: the mesh gmsh makes from a .geo goes to a
-// scratch directory, removed at the end.
+// scratch directory, removed at the end (gmsh's log is kept there when gmsh failed).
 #pragma once
 
 #include <petscsys.h>
@@ -15,7 +15,8 @@ PetscErrorCode listingOptions(bool *listing);
 
 /// The scratch directory (under $TMPDIR or /tmp) that stands in for the output directory
 /// while the options are listed. Rank 0 removes it when the listing goes out of scope, also
-/// after an error (a bad option found while listing).
+/// after an error (a bad option found while listing), except gmsh's log after a listing that
+/// failed with one (a .geo gmsh could not mesh): the error message names that file.
 class OptionListing {
 public:
   OptionListing() = default;
@@ -32,7 +33,7 @@ public:
   PetscErrorCode end(MPI_Comm comm, const std::string &output_dir);
 
 private:
-  void remove();
+  void remove(bool failed);
   std::string scratch_;
   bool owner_ = false; ///< rank 0, which created it
 };

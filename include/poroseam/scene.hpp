@@ -143,6 +143,8 @@ struct Scene {
 
   std::string output_dir = "output";
   int output_every = 1; ///< field output every n steps, 0 for none
+  /// Interface output (interfaces.h5) every n steps, 0 for none (default: output_every).
+  int interface_output_every = 1;
   std::vector<Probe> probes;
 
   bool hasPressure() const;

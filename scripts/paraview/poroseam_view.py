@@ -37,7 +37,7 @@ COMPONENTS = {c: 3 * "xyz".index(c[0]) + "xyz".index(c[1])
 
 def field_choices(point_arrays, cell_arrays):
     """What --field accepts for this output: point scalars, cell scalars and tensor components."""
-    names = sorted(a for a in point_arrays if a in ("pressure", "excess_pressure"))
+    names = sorted(a for a in point_arrays if a in ("pressure", "excess_pressure", "steady_pressure"))
     names += ["displacement_magnitude"]
     names += sorted(a for a in cell_arrays if a in ("equivalent_plastic_strain", "yield_state", "region"))
     names += [f"{t}_{c}" for t in TENSORS if t in cell_arrays for c in ("xx", "yy", "zz", "xy", "yz", "xz")]
@@ -259,7 +259,8 @@ class Pipeline:
                 self.diverging = False
         elif field is not None:
             kpa = field.endswith("pressure")
-            self.label = {"excess_pressure": "excess pore pressure", "pressure": "pore pressure"}.get(field, field)
+            self.label = {"excess_pressure": "excess pore pressure", "pressure": "pore pressure",
+                          "steady_pressure": "steady pore pressure"}.get(field, field)
             self.array = field
             if kpa:
                 self.label += " [kPa]"

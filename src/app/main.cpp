@@ -1,5 +1,6 @@
 // poroseam: hydro-mechanical finite elements for saturated soils, on PETSc.
 //   mpiexec -n 2 poroseam -options_file options/<scene>.opts [PETSc options]
+#include "poroseam/help_filter.hpp"
 #include "poroseam/output_directory.hpp"
 #include "poroseam/given_options.hpp"
 #include "poroseam/options_file.hpp"
@@ -191,6 +192,10 @@ int main(int argc, char **argv)
   petsc_argv.push_back(nullptr);
   int petsc_argc = (int)args.size();
   char **petsc_args = petsc_argv.data();
+  // Rank 0 lists the options without what PETSc's internal objects read (help_filter.hpp),
+  // from PetscInitialize's own sections on.
+  for (const auto &a : args)
+    if ((a == "-help" || a == "-h") && worldRank() == 0) poroseam::installHelpFilter();
   PetscCall(PetscInitialize(&petsc_argc, &petsc_args, nullptr, help));
   PetscCall(PetscPushErrorHandler(reportError, nullptr));
   PetscBool help_requested = PETSC_FALSE, has_mesh = PETSC_FALSE;
@@ -203,6 +208,7 @@ int main(int argc, char **argv)
     PetscHelpPrintf = silentHelpPrintf;
     PetscVFPrintf = silentVFPrintf;
   }
+
   // -help alone prints docs/scenes.md; with a scene, the run is set up (nothing written, no
   // step taken) and PETSc lists every option, poroseam's and its own, with its value.
   if (help_requested && !has_mesh) poroseam::printSceneHelp(PETSC_COMM_WORLD);

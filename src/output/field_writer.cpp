@@ -9,7 +9,8 @@
 //   /fields/displacement/<step>     [Nv, 3]     double   (padded with zeros when dim < 3)
 //   /fields/pressure/<step>         [Nv]        double   (only when the section has pressure;
 //                                                        NaN at vertices without pressure)
-//   /fields/excess_pressure/<step>  [Nv]        double   (pressure - initial pressure)
+//   /fields/excess_pressure/<step>  [Nv]        double   (pressure - steady pressure)
+//   /fields/steady_pressure/<step>  [Nv]        double   (the steady pore pressure)
 //   /cell_fields/region             [Nc, 1]     PetscInt region index; attribute "names"
 //   /fields/recovered_effective_stress/<step>, /fields/recovered_total_stress/<step>
 //                                   [Nv, 9]     double   stresses recovered at the nodes from
@@ -90,7 +91,8 @@ struct FieldWriter::Impl {
   /// The datasets of one write() (collective), flushed.
   PetscErrorCode writeStep(double time, const std::vector<PetscScalar> &disp,
                            const std::vector<PetscScalar> &pres,
-                           const std::vector<PetscScalar> &excess, const CellFields *cells);
+                           const std::vector<PetscScalar> &excess,
+                           const std::vector<PetscScalar> &steady, const CellFields *cells);
   PetscErrorCode writeVertexVec(const char *group, const std::string &name, PetscInt bs,
                                 const std::vector<PetscScalar> &values, const char *units,
                                 double time, bool withTime);
@@ -205,6 +207,7 @@ PetscErrorCode FieldWriter::Impl::writeXdmf()
       if (presField >= 0) {
         attribute(x, "pressure", false, s);
         attribute(x, "excess_pressure", false, s);
+        attribute(x, "steady_pressure", false, s);
       }
       if (regions) {
         CellField region;
@@ -363,11 +366,12 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
                n, storage);
   }
 
-  std::vector<PetscScalar> disp(nv * 3, 0.0), pres, excess;
+  std::vector<PetscScalar> disp(nv * 3, 0.0), pres, excess, steady;
   if (im.presField >= 0) {
     // A vertex without pressure belongs to non-porous regions only: no pore pressure there.
     pres.assign(nv, std::numeric_limits<double>::quiet_NaN());
     excess.assign(nv, std::numeric_limits<double>::quiet_NaN());
+    steady.assign(nv, std::numeric_limits<double>::quiet_NaN());
   }
   PetscCall(VecGetArrayRead(local_solution, &sol));
   if (local_initial) PetscCall(VecGetArrayRead(local_initial, &init));
@@ -383,26 +387,28 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
     if (im.presField < 0) continue;
     // The pressure is linear at both orders: at a node that is not a vertex (order 2) it is
     // the mean over the node's corners, which is its value there; NaN when a corner has none.
-    double p = 0.0, dp = 0.0;
+    double p = 0.0, dp = 0.0, sp = 0.0;
     const double share = 1.0 / (double)im.mesh.nodeVertices[i].size();
     for (PetscInt v : im.mesh.nodeVertices[i]) {
       PetscCall(PetscSectionGetFieldDof(section, v, im.presField, &dof));
       if (dof == 0) {
-        p = dp = std::numeric_limits<double>::quiet_NaN();
+        p = dp = sp = std::numeric_limits<double>::quiet_NaN();
         break;
       }
       PetscCall(PetscSectionGetFieldOffset(section, v, im.presField, &off));
       p += share * sol[off];
       dp += share * (init ? sol[off] - init[off] : sol[off]);
+      sp += share * (init ? init[off] : 0.0);
     }
     pres[i] = p;
     excess[i] = dp;
+    steady[i] = sp;
   }
   PetscCall(VecRestoreArrayRead(local_solution, &sol));
   if (local_initial) PetscCall(VecRestoreArrayRead(local_initial, &init));
 
   PetscCheck(!im.failed, im.comm, PETSC_ERR_ARG_WRONGSTATE, "FieldWriter::write after a failure");
-  double bytes = 8.0 * (disp.size() + pres.size() + excess.size());
+  double bytes = 8.0 * (disp.size() + pres.size() + excess.size() + steady.size());
   if (cells) {
     for (const CellField &f : cells->fields)
       bytes += 8.0 * f.values.size();
@@ -421,7 +427,7 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
     // Test hook standing in for a write refused on one rank (tests/input/io_faults.py).
     PetscCheck(im.test_fail_rank != rank && im.test_fail_rank != -1, PETSC_COMM_SELF,
                PETSC_ERR_FILE_WRITE, "write refused (test hook -test_io_fail_rank)");
-    PetscCall(im.writeStep(time, disp, pres, excess, cells));
+    PetscCall(im.writeStep(time, disp, pres, excess, steady, cells));
     PetscFunctionReturn(0);
   }));
   im.times.push_back(time);
@@ -432,6 +438,7 @@ PetscErrorCode FieldWriter::write(double time, Vec local_solution, Vec local_ini
 PetscErrorCode FieldWriter::Impl::writeStep(double time, const std::vector<PetscScalar> &disp,
                                             const std::vector<PetscScalar> &pres,
                                             const std::vector<PetscScalar> &excess,
+                                            const std::vector<PetscScalar> &steady,
                                             const CellFields *cells)
 {
   Impl &im = *this;
@@ -441,6 +448,7 @@ PetscErrorCode FieldWriter::Impl::writeStep(double time, const std::vector<Petsc
   if (im.presField >= 0) {
     PetscCall(im.writeVertexVec("/fields/pressure", step, 1, pres, "Pa", time, true));
     PetscCall(im.writeVertexVec("/fields/excess_pressure", step, 1, excess, "Pa", time, true));
+    PetscCall(im.writeVertexVec("/fields/steady_pressure", step, 1, steady, "Pa", time, true));
   }
   if (cells && !cells->vertex_fields.empty()) {
     // At each node the mean over its corners (the vertex itself at a vertex): the recovered

@@ -526,6 +526,11 @@ InterfaceWriter::~InterfaceWriter()
   }
 }
 
+std::vector<double> InterfaceWriter::times() const
+{
+  return impl_ ? impl_->times : std::vector<double>();
+}
+
 PetscErrorCode InterfaceWriter::open(MPI_Comm comm, const Scene &scene, const std::string &dir,
                                      const std::vector<double> *resume)
 {

@@ -58,6 +58,11 @@ std::vector<TimeSeries::Column> TimeSeries::columns(const Scene &scene)
     for (int d = 0; d < scene.dim; ++d)
       c.push_back({p.name + ".u" + axis[d], "m"});
     c.push_back({p.name + ".p", "Pa"});
+    // The steady pore pressure and the excess over it (docs/outputs.md).
+    if (scene.hasPressure()) {
+      c.push_back({p.name + ".p_steady", "Pa"});
+      c.push_back({p.name + ".p_excess", "Pa"});
+    }
   }
   return c;
 }

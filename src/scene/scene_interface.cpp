@@ -74,7 +74,7 @@ PetscErrorCode readInterface(PetscOptionItems *PetscOptionsObject, MPI_Comm comm
   PetscCall(getReal(PetscOptionsObject, p + "dilation_limit",
                     "plastic slip [m] of interface " + i.name +
                         " after which it stops dilating (optional; none: no limit)",
-                    &slip_limit, &set));
+                    &slip_limit, &set, "none"));
   if (set) {
     PetscCheck(slip_limit >= 0.0, comm, PETSC_ERR_USER_INPUT,
                "%sdilation_limit = %g: expected the plastic slip [m] after which the joint stops "

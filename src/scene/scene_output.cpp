@@ -1,4 +1,5 @@
-// The scene's output options: field output (-output_fields_every) and point probes
+// The scene's output options: field and interface output (-output_fields_every,
+// -output_interfaces_every) and point probes
 // (-probe_<name> x,y[,z]), in their own -help section. Part of readSceneOptions.
 #include "poroseam/scene.hpp"
 #include "poroseam/scene_options.hpp"
@@ -62,6 +63,17 @@ PetscErrorCode readOutputOptions(MPI_Comm comm, Scene &scene)
   PetscCheck(every >= 0 && every == std::floor(every), comm, PETSC_ERR_USER_INPUT,
              "-output_fields_every %g: expected a whole number >= 0", every);
   scene.output_every = (int)every;
+  // Interface output: with the fields unless a scene asks for more (the caisson scenes: every
+  // step, for the mobilisation of friction within a few steps).
+  double interface_every = scene.output_every;
+  PetscCall(getReal(PetscOptionsObject, "-output_interfaces_every",
+                    "HDF5/XDMF interface output every N steps (0: none; default: as "
+                    "-output_fields_every)",
+                    &interface_every, nullptr));
+  PetscCheck(interface_every >= 0 && interface_every == std::floor(interface_every), comm,
+             PETSC_ERR_USER_INPUT, "-output_interfaces_every %g: expected a whole number >= 0",
+             interface_every);
+  scene.interface_output_every = (int)interface_every;
   PetscCall(readProbes(PetscOptionsObject, comm, scene));
   PetscOptionsEnd();
   PetscFunctionReturn(0);

@@ -151,7 +151,7 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
     PetscCall(getReal(PetscOptionsObject, p + "tension_cutoff",
                       "tension cut-off [Pa] on the largest principal effective stress of region " +
                           r.name + ", in [0, c / tan(phi)] (optional; none: the cone's apex)",
-                      &r.tension_cutoff, &cutoff));
+                      &r.tension_cutoff, &cutoff, "none"));
     if (cutoff) {
       PetscCheck(r.tension_cutoff >= 0.0, comm, PETSC_ERR_USER_INPUT,
                  "%stension_cutoff = %g: the tensile strength [Pa] must be >= 0", p.c_str(),

@@ -152,11 +152,13 @@ PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
   PetscCall(layoutOf(run, X, layout));
   const std::vector<double> history = run.problem.interfaces().committedHistory();
   const std::vector<double> times = run.fields.times();
+  const std::vector<double> interface_times = run.interface_fields.times();
   { // a full disk ends the run here, on every rank, before a partial checkpoint
     PetscInt n;
     PetscCall(VecGetLocalSize(X, &n));
     const double values = 2.0 * n + history.size() + run.problem.skeletonHistoryValues() + 3;
-    PetscCall(reserveSpace(comm, dir, *path, 8.0 * (values + (rank == 0 ? times.size() : 0)),
+    const double listed = rank == 0 ? times.size() + interface_times.size() : 0;
+    PetscCall(reserveSpace(comm, dir, *path, 8.0 * (values + listed),
                            "the checkpoint of step " + std::to_string(run.step)));
   }
 
@@ -175,7 +177,10 @@ PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
   PetscCall(writeValues(viewer, comm, "output_times", times.data(),
                         rank == 0 ? (PetscInt)times.size() : 0));
   CheckpointHeader header;
+  PetscCall(writeValues(viewer, comm, "interface_output_times", interface_times.data(),
+                        rank == 0 ? (PetscInt)interface_times.size() : 0));
   header.ranks = size, header.step = run.step, header.output_count = (PetscInt)times.size();
+  header.interface_output_count = (PetscInt)interface_times.size();
   PetscCall(TSGetTime(run.ts, &header.time));
   PetscCall(TSGetTimeStep(run.ts, &header.next_dt));
   header.last_dt = run.last_dt, header.first_contraction = run.first_contraction;
@@ -349,6 +354,19 @@ PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, Checkpoi
     times.resize(output_count);
     PetscCallMPI(MPI_Bcast(times.data(), (int)output_count, MPI_DOUBLE, 0, comm));
     info->output_times = times;
+    // Checkpoints written before -output_interfaces_every have no interface times: the
+    // interfaces were written with the fields then.
+    const PetscInt interface_count = header.interface_output_count;
+    if (interface_count < 0) {
+      info->interface_output_times = times;
+    } else {
+      std::vector<double> interface_times;
+      PetscCall(readValues(viewer, comm, "interface_output_times", rank == 0 ? interface_count : 0,
+                           interface_times));
+      interface_times.resize(interface_count);
+      PetscCallMPI(MPI_Bcast(interface_times.data(), (int)interface_count, MPI_DOUBLE, 0, comm));
+      info->interface_output_times = interface_times;
+    }
   }
   PetscCall(PetscViewerDestroy(&viewer));
   info->step = (int)header.step;
@@ -377,8 +395,8 @@ PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *re
                                "checkpoint",
                                "docs/checkpoints.md", "(none)", dir, sizeof(dir), &set));
   PetscCall(PetscOptionsInt("-restart_step",
-                            "with -restart: continue from this step's checkpoint (default: the "
-                            "latest)",
+                            "with -restart: continue from this step's checkpoint (-1, the "
+                            "default: the latest)",
                             "docs/checkpoints.md", step, &step, &step_set));
   PetscOptionsEnd();
   PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT,

@@ -34,7 +34,8 @@ struct CheckpointInfo {
   int step = 0;
   double time = 0.0;
   double next_dt = 0.0;
-  std::vector<double> output_times; ///< times already in the field and interface files
+  std::vector<double> output_times; ///< times already in the field files
+  std::vector<double> interface_output_times; ///< ... in the interface files
 };
 
 /// Restores the run's state from `path` into X, run.previous (boundary values at the

@@ -65,6 +65,7 @@ std::string headerChecksum(const CheckpointHeader &h)
   HeaderHash hash;
   for (PetscInt v : {h.version, h.ranks, h.step, h.output_count})
     hash.add(v);
+  if (h.interface_output_count >= 0) hash.add(h.interface_output_count); // newer checkpoints
   for (double v : {h.time, h.next_dt, h.last_dt, h.first_contraction})
     hash.add(v);
   for (const std::string *s : {&h.integrator, &h.options, &h.option_files, &h.output_files})
@@ -151,6 +152,7 @@ PetscErrorCode checkContents(MPI_Comm comm, PetscViewer viewer, std::string *dam
   PetscBool skeleton = PETSC_FALSE;
   PetscCall(PetscViewerHDF5HasDataset(viewer, "skeleton_history", &skeleton));
   if (skeleton) names.emplace_back("skeleton_history");
+  if (header.interface_output_count >= 0) names.emplace_back("interface_output_times");
   for (const std::string &name : names) {
     PetscBool has = PETSC_FALSE;
     PetscCall(PetscViewerHDF5HasDataset(viewer, name.c_str(), &has));
@@ -179,6 +181,9 @@ PetscErrorCode writeHeader(PetscViewer viewer, const CheckpointHeader &h)
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "ranks", PETSC_INT, &h.ranks));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "step", PETSC_INT, &h.step));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "output_count", PETSC_INT, &h.output_count));
+  if (h.interface_output_count >= 0)
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "interface_output_count", PETSC_INT,
+                                            &h.interface_output_count));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "time", PETSC_REAL, &h.time));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "next_dt", PETSC_REAL, &h.next_dt));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "last_dt", PETSC_REAL, &h.last_dt));
@@ -206,6 +211,11 @@ PetscErrorCode readHeader(PetscViewer viewer, CheckpointHeader *h, bool *intact)
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, nullptr, &h->step));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "output_count", PETSC_INT, nullptr,
                                          &h->output_count));
+  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "interface_output_count", &has));
+  h->interface_output_count = -1;
+  if (has)
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "interface_output_count", PETSC_INT,
+                                           nullptr, &h->interface_output_count));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, nullptr, &h->time));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "next_dt", PETSC_REAL, nullptr, &h->next_dt));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "last_dt", PETSC_REAL, nullptr, &h->last_dt));

@@ -21,6 +21,9 @@ constexpr PetscInt kCheckpointVersion = 3;
 /// What a checkpoint says about its run besides the vectors: its root attributes.
 struct CheckpointHeader {
   PetscInt version = kCheckpointVersion, ranks = 0, step = 0, output_count = 0;
+  /// Times in the interface files (-1: a checkpoint written before -output_interfaces_every,
+  /// without the attribute and its dataset `interface_output_times`).
+  PetscInt interface_output_count = -1;
   double time = 0.0, next_dt = 0.0, last_dt = 0.0, first_contraction = 0.0;
   std::string integrator;
   /// The options the run was given, one "-name value" a line (an options file: restart_check.hpp)

@@ -22,15 +22,25 @@ PetscErrorCode listingOptions(bool *listing)
 
 OptionListing::~OptionListing()
 {
-  remove();
+  remove(true);
 }
 
-void OptionListing::remove()
+void OptionListing::remove(bool failed)
 {
   if (!owner_) return;
-  std::error_code ignored;
-  std::filesystem::remove_all(scratch_, ignored);
   owner_ = false;
+  std::error_code ignored;
+  // A listing that failed in gmsh points to gmsh's log in the scratch directory: keep that
+  // file (and only it) for the user to read. gmsh -v 1 writes nothing when it succeeds.
+  const std::filesystem::path log = std::filesystem::path(scratch_) / "mesh" / "gmsh.log";
+  if (failed && std::filesystem::file_size(log, ignored) > 0 && !ignored) {
+    for (const auto &entry : std::filesystem::directory_iterator(log.parent_path(), ignored))
+      if (entry.path() != log) std::filesystem::remove_all(entry.path(), ignored);
+    for (const auto &entry : std::filesystem::directory_iterator(scratch_, ignored))
+      if (entry.path() != log.parent_path()) std::filesystem::remove_all(entry.path(), ignored);
+    return;
+  }
+  std::filesystem::remove_all(scratch_, ignored);
 }
 
 PetscErrorCode OptionListing::begin(MPI_Comm comm, std::string *output_dir)
@@ -61,7 +71,7 @@ PetscErrorCode OptionListing::end(MPI_Comm comm, const std::string &output_dir)
 {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Barrier(comm)); // every rank is done with the mesh file
-  remove();
+  remove(false);
   PetscCall(PetscPrintf(comm,
                         "poroseam: -help: the scene was read and checked and the solvers set "
                         "up; the options above show their values. Nothing was run or written "

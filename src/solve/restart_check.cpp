@@ -27,8 +27,8 @@ const char *const kMayChange[] = {
     "ksp_", "pc_", "snes_", "mat_", "fieldsplit_", "mg_", "sub_", "redundant_", "vertex_blocks_",
     "schur_selfp_", "esteig_", "solver_preset", "solver_auto_threshold", "mass_balance_krylov_test",
     // What is written and where (-output_dir: a restart writes into the directory it continues).
-    "output_dir", "output_fields_every", "partitioner_report", "ts_monitor", "ts_view",
-    "ts_adapt_monitor", "dm_view",
+    "output_dir", "output_fields_every", "output_interfaces_every", "partitioner_report",
+    "ts_monitor", "ts_view", "ts_adapt_monitor", "dm_view",
     // The run's own controls: checkpoints, restart, guards against a run that does not end.
     "checkpoint_every", "checkpoint_rolling", "restart", "ts_max_steps", "ts_max_reject",
     "ts_max_snes_failures", "ts_error_if_step_fails", "mesh_max_elements", "mesh_time_limit",

@@ -14,9 +14,11 @@
 #include "poroseam/time_integration.hpp"
 #include "poroseam/time_series.hpp"
 #include "poroseam/unused_options.hpp"
+#include "poroseam/time_to_finish.hpp"
 
 #include "progress_line.hpp"
 #include "rolling_checkpoint.hpp"
+#include "steady_pressure.hpp"
 #include "stop_request.hpp"
 
 #include <petscts.h>
@@ -61,6 +63,7 @@ struct Run {
   /// While set (postStep), the residual copies the integrator's local rate here.
   Vec capture_rate = nullptr;
   Vec initial = nullptr; ///< local initial state
+  SteadyPressure steady;  ///< the steady pore pressure of the outputs
   std::vector<BoundaryDofs> boundary_dofs;
   /// Per interface: its prescribed interface-pressure dofs, where water leaves along it.
   std::vector<std::vector<PetscInt>> interface_end_dofs;
@@ -116,6 +119,10 @@ struct Run {
   double accepted_next_dt = 0.0;
   AttemptFailure failure; ///< why the step in progress failed so far
   UnusedOptionCheck unused_options; ///< options typed that nothing reads (unused_options.hpp)
+  /// Step rejections already announced by a cut-back line (cut_back_line.cpp).
+  PetscInt announced_rejects = 0;
+  /// The wall time still needed, on the step line (time_to_finish.hpp).
+  TimeToFinish time_to_finish;
 };
 
 inline PetscErrorCode currentDt(Run &run, double *dt)
@@ -187,6 +194,19 @@ PetscErrorCode noteAttempt(TS ts, PetscReal stage_time, PetscInt stage, Vec *Y);
 /// solve: what failed (reasons, solver, counts) and what to try instead; false otherwise.
 bool describeLinearFailure(const Run &run, int attempts, double t, std::string *failure,
                            std::string *advice);
+
+// step_record.cpp: what one step leaves in the outputs.
+
+/// One row of timeseries.csv and, every output_every steps and at the `last` step of the run,
+/// the fields; the interfaces likewise every interface_output_every steps.
+PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
+                          PetscInt ksp, PetscInt rejected, double wall, bool last = false);
+
+// cut_back_line.cpp: a cut-back says so as it happens.
+
+/// TS pre-stage hook: after a rejected attempt, rank 0 prints one line naming the step, why
+/// the attempt failed, its dt and the dt of the retry. No communication.
+PetscErrorCode announceCutBack(TS ts, PetscReal stage_time);
 
 // run_ending.cpp: how the run ended.
 

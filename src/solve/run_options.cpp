@@ -53,7 +53,7 @@ const char *const kIntegerOptions[] = {"ts_max_steps",
                                        "restart_step",
                                        "test_io_fail_rank"};
 /// Options poroseam reads as numbers that must be whole (a count of steps).
-const char *const kWholeNumberOptions[] = {"output_fields_every"};
+const char *const kWholeNumberOptions[] = {"output_fields_every", "output_interfaces_every"};
 /// Real options, likewise.
 const char *const kRealOptions[] = {"ts_dt",
                                     "ts_max_time",

@@ -110,34 +110,6 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
   PetscFunctionReturn(0);
 }
 
-/// One row of timeseries.csv and, every output_every steps and at the `last` step of the run,
-/// the fields.
-PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, PetscInt newton,
-                          PetscInt ksp, PetscInt rejected, double wall, bool last = false)
-{
-  std::vector<double> resultants, probes, interface;
-  PetscFunctionBeginUser;
-  PetscCall(beginLogEvent(run.events.output));
-  PetscCall(boundaryResultants(run, t, dt, local, rate, resultants));
-  PetscCall(interfaceResultants(run, local, InterfaceRates{rate, dt}, interface));
-  PetscCall(run.probes.evaluate(local, probes));
-  PetscCall(run.series.write(run.scene,
-                             StepRow{run.step, t, dt, run.problem.loadFactor(t), (int)newton,
-                                     (int)ksp, (int)rejected, wall},
-                             resultants, interface, probes));
-  // The final state always: after cut-backs the step count need not be a multiple of
-  // output_every (a run to 3000 s ended with its last field at 2920 s).
-  if (run.scene.output_every > 0 && (run.step % run.scene.output_every == 0 || last)) {
-    CellFields cells;
-    PetscCall(run.problem.cellFields(local, cells));
-    PetscCall(run.fields.write(t, local, run.initial, &cells));
-    PetscCall(
-        run.interface_fields.write(t, run.problem.interfaces(), local, InterfaceRates{rate, dt}));
-  }
-  PetscCall(endLogEvent(run.events.output));
-  PetscFunctionReturn(0);
-}
-
 /// Makes the next linear solve set up its direct (LU/Cholesky) preconditioner afresh.
 PetscErrorCode resetDirectSolver(TS ts)
 {
@@ -295,6 +267,7 @@ PetscErrorCode releaseRun(Run &run, Vec *X)
   PetscCall(VecDestroy(X));
   PetscCall(VecDestroy(&run.previous));
   PetscCall(VecDestroy(&run.jacobian_diagonal));
+  PetscCall(run.steady.destroy());
   PetscCall(VecDestroy(&run.initial));
   PetscCall(run.time.destroy());
   PetscCall(run.problem.release());
@@ -384,6 +357,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(DMCreateLocalVector(run.dm, &run.previous));
   PetscCall(VecDuplicate(run.previous, &run.initial));
   PetscCall(run.problem.initialState(run.initial));
+  PetscCall(run.steady.setup(run.dm, run.scene, run.initial));
   PetscCall(VecCopy(run.initial, run.previous));
   Vec X;
   PetscCall(DMCreateGlobalVector(run.dm, &X));
@@ -414,6 +388,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(TSSetPreStep(run.ts, landOnFinalTime));
   PetscCall(TSSetPostStep(run.ts, postStep));
   PetscCall(TSSetPostStage(run.ts, noteAttempt)); // why an attempt failed (solve_failure.cpp)
+  PetscCall(TSSetPreStage(run.ts, announceCutBack)); // a cut-back says so as it happens
   SNES snes;
   PetscCall(TSGetSNES(run.ts, &snes));
   PetscCall(SNESSetType(snes, SNESNEWTONLS));
@@ -540,6 +515,9 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
       run.fields.declareCellFields(declared);
     }
     PetscCall(run.fields.writeRegions(cells, regions, names));
+  }
+  if (run.scene.interface_output_every > 0) {
+    const std::vector<double> *times = restart.restart ? &resumed.interface_output_times : nullptr;
     PetscCall(run.interface_fields.open(comm, run.scene, run.scene.output_dir, times));
   }
   PetscCall(endLogEvent(run.events.output));

@@ -14,24 +14,6 @@ namespace simulation_detail {
 
 namespace {
 
-/// The wall time still needed to reach the final time, from the mean wall time per unit of
-/// simulated time so far (steps vary in cost; the mean over the run evens that out).
-std::string timeToFinish(const Run &run, double t)
-{
-  const double simulated = t - run.loop_start_time;
-  if (simulated <= 0.0) return "?";
-  const double left =
-      std::max(0.0, run.t_end - t) * (MPI_Wtime() - run.loop_start_wall) / simulated;
-  char text[32];
-  if (left < 120.0)
-    std::snprintf(text, sizeof(text), "%.0f s", left);
-  else if (left < 7200.0)
-    std::snprintf(text, sizeof(text), "%.0f min", left / 60.0);
-  else
-    std::snprintf(text, sizeof(text), "%.1f h", left / 3600.0);
-  return text;
-}
-
 /// Rank 0: the record of the run after its last accepted step, and the one a stop signal
 /// leaves (armed for the handler).
 void noteProgress(Run &run, double t)
@@ -64,7 +46,11 @@ PetscErrorCode noteAcceptedStep(Run &run, const StepRow &row, bool kept)
   PetscFunctionBeginUser;
   PetscCall(TSGetTimeStep(run.ts, &run.accepted_next_dt));
   noteProgress(run, row.time);
-  const std::string eta = timeToFinish(run, row.time);
+  // The coming steps: the nominal size at fixed steps (a cut step grows back within a few
+  // steps), the controller's choice at adaptive steps.
+  run.time_to_finish.addStep(row.wall);
+  const std::string eta = formatDuration(run.time_to_finish.seconds(
+      row.time, run.t_end, run.time.adaptive() ? run.accepted_next_dt : run.nominal_dt));
   char line[512];
   std::snprintf(line, sizeof(line),
                 "step %4d  t %11.5e/%.5e s  dt %10.4e  load %6.4f  newton %2d  krylov %4d%s"

@@ -231,7 +231,8 @@ def main():
         status, _ = restart(out, ["-ts_max_time", 12, "-checkpoint_every", 2], args.ranks)
         expect(chk, status == 0 and os.path.isfile(os.path.join(out, "checkpoints", "step-000004.h5"))
                and os.path.isfile(os.path.join(out, "fields.h5")), "a first run with checkpoints and fields")
-        status, _ = restart(out, ["-ts_max_time", 6, "-output_fields_every", 0], args.ranks)
+        status, _ = restart(out, ["-ts_max_time", 6, "-output_fields_every", 0, "-output_interfaces_every", 0],
+                            args.ranks)
         left = [f for f in ("checkpoints", "fields.h5", "fields.xmf", "interfaces.h5", "interface_cells.xmf",
                             "interface_points.xmf") if os.path.exists(os.path.join(out, f))]
         expect(chk, status == 0 and not left,

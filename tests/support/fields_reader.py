@@ -8,7 +8,7 @@
     out.connectivity     # (Nc, nodes per cell) 0-based vertex indices (XDMF order)
     out.topology_type    # "Triangle", "Quadrilateral", "Tetrahedron" or "Hexahedron"
     out.fields[i]        # dict name -> array for time i, e.g. "displacement" (Nv, 3),
-                         # "pressure" (Nv,), "excess_pressure" (Nv,) (NaN at vertices of
+                         # "pressure" (Nv,), "excess_pressure" (Nv,), "steady_pressure" (Nv,) (NaN at vertices of
                          # non-porous regions only)
     out.cell_fields[i]   # dict name -> per-cell array for time i: "region" (Nc,),
                          # "effective_stress", "total_stress", "strain" (Nc, 3, 3)
@@ -196,7 +196,7 @@ def read_fields(output_dir, basename="fields"):
                 meta = {}
                 values = _read_item(
                     _child(a, "DataItem"), output_dir, h5files, actx,
-                    allow_nan=name in ("pressure", "excess_pressure"), attrs=meta,
+                    allow_nan=name in ("pressure", "excess_pressure", "steady_pressure"), attrs=meta,
                 )
                 out.units[name] = meta["units"]
                 atype = a.get("AttributeType", "Scalar")
