@@ -73,6 +73,10 @@ struct Run {
   double newton_last_fnorm = 0.0;
   double first_contraction = 0.0;
   Vec jacobian_diagonal = nullptr; ///< with a fieldsplit: diag of the Jacobian (vertex_blocks)
+  /// -snes_keep_preconditioner: the linear solver keeps its factorisation or preconditioner
+  /// while the Jacobian is unchanged (Problem::jacobianRepeated), instead of redoing it for
+  /// every Newton iteration; off when the user lags it himself (-snes_lag_preconditioner).
+  PetscBool keep_preconditioner = PETSC_TRUE;
   /// Profiling: -log_view events and phases of this run, and whether the first Jacobian
   /// (PsFirstJacobian) is behind us.
   LogEvents events;

@@ -101,6 +101,15 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
                                  P));
   if (run.jacobian_diagonal) PetscCall(MatGetDiagonal(P, run.jacobian_diagonal));
   if (first) PetscCall(endLogEvent(run.events.first_jacobian));
+  if (run.keep_preconditioner) {
+    // A linear scene at a fixed step has one Jacobian: factorising it at every step was most
+    // of the stepping time (a 3D column at order 2, docs/performance.md). SNES decides right
+    // after this callback whether the KSP keeps its preconditioner, from the lag: -1 keeps
+    // it, 1 rebuilds it. A new step size, BDF's start-up, or a restart builds it afresh.
+    SNES snes;
+    PetscCall(TSGetSNES(run.ts, &snes));
+    PetscCall(SNESSetLagPreconditioner(snes, run.problem.jacobianRepeated() ? -1 : 1));
+  }
   run.jacobian_assembled = true;
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
@@ -424,6 +433,11 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(PetscOptionsInt("-test_step_delay_after", "test hook: ... in the steps after this one",
                             "scripts/stop_trials", run.step_delay_after, &run.step_delay_after,
                             nullptr));
+  PetscCall(PetscOptionsBool("-snes_keep_preconditioner",
+                             "keep the factorisation or preconditioner while the Jacobian is "
+                             "unchanged (linear scenes at a fixed step)",
+                             "docs/performance.md", run.keep_preconditioner,
+                             &run.keep_preconditioner, nullptr));
   PetscOptionsEnd();
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
   PetscCall(SNESSetComputeInitialGuess(snes, chooseInitialGuess, &run));
@@ -434,6 +448,11 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(run.time.beforeOptions(run.ts));
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
+  {
+    PetscInt lag; // the user's own lag of the preconditioner wins over keeping it
+    PetscCall(SNESGetLagPreconditioner(snes, &lag));
+    if (lag != 1) run.keep_preconditioner = PETSC_FALSE;
+  }
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
   PetscCall(configureLineSearch(run, snes)); // contact kinks (newton_control.cpp)
   {

@@ -539,13 +539,13 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscSection local, global, csec;
   Vec coords;
-  PetscInt vStart, vEnd;
+  PetscInt pStart, pEnd;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(dm, &local));
   PetscCall(DMGetGlobalSection(dm, &global));
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(DMGetCoordinateSection(dm, &csec));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(PetscSectionGetChart(local, &pStart, &pEnd));
   auto *map = new VertexBlockMap;
   map->dim = dim;
   map->outer = outer;
@@ -559,12 +559,15 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
   PetscCall(ISGetIndices(displacement, &free_global));
 
   map->ext_of_free.assign(nfree, -1);
-  // Owned vertices, in point order: dim extended rows each.
+  // Owned displacement nodes, in point order: dim extended rows each. A node is a point with
+  // displacement unknowns: every vertex, and at order 2 edges, quadrilaterals and hexahedra
+  // (layout.hpp).
   std::vector<PetscInt> owned;
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    PetscInt gdof;
-    PetscCall(PetscSectionGetDof(global, v, &gdof));
-    if (gdof >= 0) owned.push_back(v);
+  for (PetscInt p = pStart; p < pEnd; ++p) {
+    PetscInt gdof, udof;
+    PetscCall(PetscSectionGetDof(global, p, &gdof));
+    PetscCall(PetscSectionGetFieldDof(local, p, kDisplacementField, &udof));
+    if (gdof >= 0 && udof > 0) owned.push_back(p);
   }
   map->ext_local = dim * (PetscInt)owned.size();
   PetscCallMPI(MPI_Exscan(&map->ext_local, &map->ext_start, 1, MPIU_INT, MPI_SUM, comm));
@@ -578,12 +581,13 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
   PetscCall(VecGetArrayRead(coords, &x));
   for (size_t k = 0; k < owned.size(); ++k) {
     const PetscInt v = owned[k];
-    PetscInt goff, coff, ncon;
+    PetscInt goff, ncon;
     const PetscInt *con = nullptr;
+    double node[3];
     PetscCall(PetscSectionGetOffset(global, v, &goff));
-    PetscCall(PetscSectionGetOffset(csec, v, &coff));
+    PetscCall(displacementNodeLocation(dm, csec, x, v, dim, node));
     for (int d = 0; d < dim; ++d)
-      xc[k * dim + d] = x[coff + d];
+      xc[k * dim + d] = node[d];
     // The free components are the point's first global dofs (field 0 comes first), in
     // component order, constrained ones left out.
     PetscCall(PetscSectionGetFieldConstraintDof(local, v, kDisplacementField, &ncon));
@@ -603,7 +607,7 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
   PetscCall(ISRestoreIndices(displacement, &free_global));
   for (PetscInt e : map->ext_of_free)
     PetscCheck(e >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-               "vertex_blocks: a displacement dof that belongs to no owned vertex");
+               "vertex_blocks: a displacement dof that belongs to no owned node");
   PetscCall(extendedModes(dim, axisymmetric, ext_coords, map->ext_modes));
   map->coordinates = ext_coords;
   // The same map as a vector of the displacement block, to look up off-rank columns.
