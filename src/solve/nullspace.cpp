@@ -193,7 +193,8 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobi
   IS *fields;
   PetscCall(DMCreateFieldIS(dm, &numFields, &names, &fields));
   MatNullSpace modes;
-  PetscCall(displacementRigidBodyModes(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], &modes));
+  PetscCall(displacementRigidBodyModes(dm, scene.dim, scene.axisymmetric,
+                                       fields[kDisplacementField], &modes));
   PetscCall(DMCreateGlobalVector(dm, jacobian_diagonal));
   PetscCall(attachVertexBlocks(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], modes,
                                ksp, *jacobian_diagonal));
