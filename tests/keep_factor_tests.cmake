@@ -14,3 +14,5 @@ foreach(case terzaghi_3d_order2 elastic_3d_order2)
                       --case ${case} --ranks 2)
   set_tests_properties(solvers.presets_${case}_np2 PROPERTIES PROCESSORS 2)
 endforeach()
+# The rigid-body near-null space is exact at both orders (K r = 0 without supports).
+set_tests_properties(unit.test_rigid_modes PROPERTIES LABELS "unit;order;solvers")
