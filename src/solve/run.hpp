@@ -138,6 +138,9 @@ PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx);
 /// With contact interfaces, Newton's line search steps over the kinks of the contact law
 /// (kinkLineSearch; -snes_kink_linesearch 0 keeps PETSc's -snes_linesearch_type).
 PetscErrorCode configureLineSearch(Run &run, SNES snes);
+/// Reads -snes_keep_preconditioner (run.keep_preconditioner; off when the user lags the
+/// preconditioner himself, -snes_lag_preconditioner). Call after TSSetFromOptions.
+PetscErrorCode configureKeepPreconditioner(Run &run, SNES snes);
 
 // solution_view.cpp: PETSc's own viewers of the solution show the prescribed values too.
 

@@ -433,11 +433,6 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(PetscOptionsInt("-test_step_delay_after", "test hook: ... in the steps after this one",
                             "scripts/stop_trials", run.step_delay_after, &run.step_delay_after,
                             nullptr));
-  PetscCall(PetscOptionsBool("-snes_keep_preconditioner",
-                             "keep the factorisation or preconditioner while the Jacobian is "
-                             "unchanged (linear scenes at a fixed step)",
-                             "docs/performance.md", run.keep_preconditioner,
-                             &run.keep_preconditioner, nullptr));
   PetscOptionsEnd();
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
   PetscCall(SNESSetComputeInitialGuess(snes, chooseInitialGuess, &run));
@@ -448,13 +443,9 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(run.time.beforeOptions(run.ts));
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
-  {
-    PetscInt lag; // the user's own lag of the preconditioner wins over keeping it
-    PetscCall(SNESGetLagPreconditioner(snes, &lag));
-    if (lag != 1) run.keep_preconditioner = PETSC_FALSE;
-  }
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
   PetscCall(configureLineSearch(run, snes)); // contact kinks (newton_control.cpp)
+  PetscCall(configureKeepPreconditioner(run, snes)); // linear scenes (newton_control.cpp)
   {
     KSP ksp;
     PetscReal rtol;
