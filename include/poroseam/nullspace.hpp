@@ -8,11 +8,27 @@
 
 namespace poroseam {
 
+/// Where the displacement node of a point lies: the mean of the vertices of its closure (the
+/// vertex itself; at order 2 the midpoint of a straight edge, and the centre of a
+/// quadrilateral or hexahedron, where its bilinear / trilinear map puts the Q2 node).
+/// `coords` is the local coordinate array of `csec` (DMGetCoordinatesLocal).
+PetscErrorCode displacementNodeLocation(DM dm, PetscSection csec, const PetscScalar *coords,
+                                        PetscInt point, int dim, double x[3]);
+
+/// The rigid-body modes (3 in 2D, 6 in 3D; axisymmetric: the 2 translations) of the
+/// displacement at every displacement node, restricted to the free dofs of the split
+/// `displacement` (global indices) and orthonormalised: the near null space of the elastic
+/// stiffness without supports, exactly at both orders (a field linear in x is in the P2 / Q2
+/// space of a straight-sided cell, tests/unit/test_rigid_modes.cpp).
+PetscErrorCode displacementRigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement,
+                                          MatNullSpace *space);
+
 /// Makes `vectors` orthonormal in place (modified Gram-Schmidt), as MatNullSpaceCreate expects.
 PetscErrorCode orthonormalize(std::vector<Vec> &vectors);
 
 /// If the PC of the TS's Newton solver is PCFIELDSPLIT, defines the splits "displacement"
-/// (with the rigid-body modes attached as its near null space) and "pressure" (the bulk and
+/// (with the rigid-body modes at every displacement node, both orders, attached as its near
+/// null space) and "pressure" (the bulk and
 /// the interface pressures together: a Schur complement takes exactly two splits).
 /// Call after TSSetFromOptions. With a fieldsplit, *jacobian_diagonal becomes a global vector
 /// that the caller must fill with the Jacobian's diagonal at every assembly (the displacement

@@ -71,6 +71,11 @@ public:
   /// as in residual (mode.include_loads does not matter: loads do not depend on x).
   PetscErrorCode jacobian(double t, double shift, Vec local, Vec local_rate,
                           const ResidualMode &mode, Mat J) const;
+  /// Whether the last jacobian() assembled exactly the matrix of the call before it (the
+  /// same on every rank): a scene without interfaces or skeleton history at an unchanged
+  /// shift and mass scale (fixed step), whose Jacobian is the copy of the cells' one. The
+  /// solver then keeps its factorisation or preconditioner (-snes_keep_preconditioner).
+  bool jacobianRepeated() const { return jacobian_repeated_; }
 
   /// Per-cell output of the state `local` (a local vector with boundary values inserted):
   /// effective_stress and total_stress [Pa] (full 3 x 3, tension positive) and strain [-],
@@ -220,6 +225,7 @@ private:
   /// assembled with (jacobian() copies it while they stay the same).
   mutable Mat linear_cells_jacobian_ = nullptr;
   mutable double linear_cells_shift_ = 0.0, linear_cells_mass_scale_ = 0.0;
+  mutable bool jacobian_repeated_ = false; ///< jacobianRepeated()
 };
 
 } // namespace poroseam

@@ -1,4 +1,6 @@
-// The displacement block with whole vertex blocks, for algebraic multigrid.
+// The displacement block with whole node blocks, for algebraic multigrid. A node is a point
+// that carries displacement unknowns: every vertex, and at -displacement_order 2 every edge,
+// quadrilateral and hexahedron too (one node each, layout.hpp); "vertex" below means node.
 //
 // Dirichlet conditions are section constraints, so a constrained displacement component is not
 // an unknown at all: the displacement block has 1, 2 or 3 rows per vertex and no block size.

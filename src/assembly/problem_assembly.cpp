@@ -150,6 +150,10 @@ PetscErrorCode Problem::jacobian(double t, double shift, Vec local, Vec local_ra
   PetscCall(endLogEvent(events_.interface_jacobian));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  // Without interfaces and history J is the copy made or taken above: when taken, it is the
+  // very matrix of the last call (state-dependent terms would make it differ). Decided from
+  // the scene, not this rank's cells, so that every rank agrees.
+  jacobian_repeated_ = reuse && !any_skeleton_history_ && scene_->interfaces.empty();
   PetscCall(endLogEvent(events_.jacobian));
   PetscFunctionReturn(0);
 }

@@ -373,5 +373,22 @@ PetscErrorCode configureLineSearch(Run &run, SNES snes)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode configureKeepPreconditioner(Run &run, SNES snes)
+{
+  PetscInt lag;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(PetscObjectComm((PetscObject)snes), nullptr, "poroseam linear solver reuse",
+                    "docs/performance.md");
+  PetscCall(PetscOptionsBool("-snes_keep_preconditioner",
+                             "keep the factorisation or preconditioner while the Jacobian is "
+                             "unchanged (linear scenes at a fixed step)",
+                             "docs/performance.md", run.keep_preconditioner,
+                             &run.keep_preconditioner, nullptr));
+  PetscOptionsEnd();
+  PetscCall(SNESGetLagPreconditioner(snes, &lag)); // the user's own lag wins over keeping it
+  if (lag != 1) run.keep_preconditioner = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
 } // namespace simulation_detail
 } // namespace poroseam

@@ -8,20 +8,22 @@
 #include <vector>
 
 namespace poroseam {
-namespace {
 
 /// Rigid-body modes restricted to the free displacement dofs, orthonormalised. Built by hand
-/// because MatNullSpaceCreateRigidBody needs whole blocks and constraints remove dofs.
-PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement,
-                              MatNullSpace *space)
+/// because MatNullSpaceCreateRigidBody needs whole blocks and constraints remove dofs. Every
+/// point that carries displacement unknowns takes the mode at its node (a vertex; at order 2
+/// also edge, face and cell nodes, displacementNodeLocation).
+PetscErrorCode displacementRigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement,
+                                          MatNullSpace *space)
 {
   PetscSection s, csec;
   Vec coords, local, global;
-  PetscInt vStart, vEnd;
+  PetscInt pStart, pEnd, vStart, vEnd;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(PetscSectionGetChart(s, &pStart, &pEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   // Axisymmetric: only the axial translation is free of strain (a radial displacement strains
   // the hoop), but both translations are smooth, low-energy modes worth giving to AMG.
@@ -29,17 +31,28 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement
   std::vector<Vec> modes(count);
   PetscCall(DMGetLocalVector(dm, &local));
   PetscCall(DMGetGlobalVector(dm, &global));
+  // The nodes of this rank's local points once: their offsets and positions.
+  std::vector<PetscInt> offsets;
+  std::vector<double> positions;
   const PetscScalar *x;
   PetscCall(VecGetArrayRead(coords, &x));
+  for (PetscInt pt = pStart; pt < pEnd; ++pt) {
+    PetscInt dof, off;
+    PetscCall(PetscSectionGetFieldDof(s, pt, kDisplacementField, &dof));
+    if (dof < dim) continue;
+    PetscCall(PetscSectionGetFieldOffset(s, pt, kDisplacementField, &off));
+    double p[3];
+    PetscCall(displacementNodeLocation(dm, csec, x, pt, dim, p));
+    offsets.push_back(off);
+    positions.insert(positions.end(), p, p + 3);
+  }
+  PetscCall(VecRestoreArrayRead(coords, &x));
   for (int m = 0; m < count; ++m) {
     PetscScalar *u;
     PetscCall(VecSet(local, 0.0));
     PetscCall(VecGetArray(local, &u));
-    for (PetscInt v = vStart; v < vEnd; ++v) {
-      PetscInt off, coff;
-      PetscCall(PetscSectionGetFieldOffset(s, v, kDisplacementField, &off));
-      PetscCall(PetscSectionGetOffset(csec, v, &coff));
-      const double *p = &x[coff];
+    for (size_t k = 0; k < offsets.size(); ++k) {
+      const double *p = &positions[3 * k];
       double mode[3] = {0, 0, 0};
       if (m < dim)
         mode[m] = 1.0;
@@ -52,7 +65,7 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement
       else
         mode[0] = p[2], mode[2] = -p[0];
       for (int d = 0; d < dim; ++d)
-        u[off + d] = mode[d];
+        u[offsets[k] + d] = mode[d];
     }
     PetscCall(VecRestoreArray(local, &u));
     PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, global));
@@ -62,7 +75,6 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement
     PetscCall(VecCopy(sub, modes[m]));
     PetscCall(VecRestoreSubVector(global, displacement, &sub));
   }
-  PetscCall(VecRestoreArrayRead(coords, &x));
   PetscCall(DMRestoreGlobalVector(dm, &global));
   PetscCall(DMRestoreLocalVector(dm, &local));
   PetscCall(orthonormalize(modes));
@@ -73,7 +85,30 @@ PetscErrorCode rigidBodyModes(DM dm, int dim, bool axisymmetric, IS displacement
   PetscFunctionReturn(0);
 }
 
-} // namespace
+PetscErrorCode displacementNodeLocation(DM dm, PetscSection csec, const PetscScalar *coords,
+                                        PetscInt point, int dim, double x[3])
+{
+  PetscInt vStart, vEnd, n, *pts = nullptr, count = 0;
+  PetscFunctionBeginUser;
+  x[0] = x[1] = x[2] = 0.0;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMPlexGetTransitiveClosure(dm, point, PETSC_TRUE, &n, &pts));
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscInt q = pts[2 * k];
+    if (q < vStart || q >= vEnd) continue;
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(csec, q, &off));
+    for (int d = 0; d < dim; ++d)
+      x[d] += PetscRealPart(coords[off + d]);
+    ++count;
+  }
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, point, PETSC_TRUE, &n, &pts));
+  PetscCheck(count > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "point %" PetscInt_FMT " has no vertex",
+             point);
+  for (int d = 0; d < dim; ++d)
+    x[d] /= count;
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode orthonormalize(std::vector<Vec> &vectors)
 {
@@ -153,18 +188,13 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobi
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fieldsplit));
   if (!fieldsplit) PetscFunctionReturn(0);
-  // The vertex blocks and the rigid-body modes below know vertex unknowns only.
-  PetscCheck(scene.displacement_order == 1, PetscObjectComm((PetscObject)dm), PETSC_ERR_USER_INPUT,
-             "-displacement_order %d: the fieldsplit solver (-pc_type fieldsplit, -solver_preset "
-             "fieldsplit, or auto in 3D above -solver_auto_threshold) is not available yet at "
-             "order 2; use the direct solver (-solver_preset direct)",
-             scene.displacement_order);
   PetscInt numFields;
   char **names;
   IS *fields;
   PetscCall(DMCreateFieldIS(dm, &numFields, &names, &fields));
   MatNullSpace modes;
-  PetscCall(rigidBodyModes(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], &modes));
+  PetscCall(displacementRigidBodyModes(dm, scene.dim, scene.axisymmetric,
+                                       fields[kDisplacementField], &modes));
   PetscCall(DMCreateGlobalVector(dm, jacobian_diagonal));
   PetscCall(attachVertexBlocks(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], modes,
                                ksp, *jacobian_diagonal));

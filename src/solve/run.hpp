@@ -90,6 +90,10 @@ struct Run {
   double newton_last_fnorm = 0.0;
   double first_contraction = 0.0;
   Vec jacobian_diagonal = nullptr; ///< with a fieldsplit: diag of the Jacobian (vertex_blocks)
+  /// -snes_keep_preconditioner: the linear solver keeps its factorisation or preconditioner
+  /// while the Jacobian is unchanged (Problem::jacobianRepeated), instead of redoing it for
+  /// every Newton iteration; off when the user lags it himself (-snes_lag_preconditioner).
+  PetscBool keep_preconditioner = PETSC_TRUE;
   /// Profiling: -log_view events and phases of this run, and whether the first Jacobian
   /// (PsFirstJacobian) is behind us.
   LogEvents events;
@@ -157,6 +161,9 @@ PetscErrorCode chooseInitialGuess(SNES snes, Vec X, void *ctx);
 /// With contact interfaces, Newton's line search steps over the kinks of the contact law
 /// (kinkLineSearch; -snes_kink_linesearch 0 keeps PETSc's -snes_linesearch_type).
 PetscErrorCode configureLineSearch(Run &run, SNES snes);
+/// Reads -snes_keep_preconditioner (run.keep_preconditioner; off when the user lags the
+/// preconditioner himself, -snes_lag_preconditioner). Call after TSSetFromOptions.
+PetscErrorCode configureKeepPreconditioner(Run &run, SNES snes);
 
 // solution_view.cpp: PETSc's own viewers of the solution show the prescribed values too.
 

@@ -102,6 +102,15 @@ PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscR
                                  P));
   if (run.jacobian_diagonal) PetscCall(MatGetDiagonal(P, run.jacobian_diagonal));
   if (first) PetscCall(endLogEvent(run.events.first_jacobian));
+  if (run.keep_preconditioner) {
+    // A linear scene at a fixed step has one Jacobian: factorising it at every step was most
+    // of the stepping time (a 3D column at order 2, docs/performance.md). SNES decides right
+    // after this callback whether the KSP keeps its preconditioner, from the lag: -1 keeps
+    // it, 1 rebuilds it. A new step size, BDF's start-up, or a restart builds it afresh.
+    SNES snes;
+    PetscCall(TSGetSNES(run.ts, &snes));
+    PetscCall(SNESSetLagPreconditioner(snes, run.problem.jacobianRepeated() ? -1 : 1));
+  }
   run.jacobian_assembled = true;
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
@@ -419,6 +428,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
   PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
   PetscCall(configureLineSearch(run, snes)); // contact kinks (newton_control.cpp)
+  PetscCall(configureKeepPreconditioner(run, snes)); // linear scenes (newton_control.cpp)
   {
     KSP ksp;
     PetscReal rtol;

@@ -44,8 +44,9 @@ CASES = {
                                                      "-mesh", "meshes/block_on_base_3d_tet.geo"],
                                        expect=["-interface_contact_integration nodal",
                                                "triangular face", "use gauss"], ranks=2),
-    "order2_fieldsplit": dict(args=ORDER + ["-ksp_type", "fgmres", "-pc_type", "fieldsplit"],
-                              expect=["-displacement_order 2", "fieldsplit", "-solver_preset direct"]),
+    # The fieldsplit preset at order 2 (refused until 2026-11-27): a run, not an error.
+    "order2_fieldsplit": dict(args=ORDER + ["-ts_max_time", "0.4", "-solver_preset", "fieldsplit"],
+                              ok=True, expect=["solver preset fieldsplit", "results in"]),
     "order2_runs": dict(args=ORDER + ["-ts_max_time", "0.4"], ok=True, expect=["results in"]),
     "order2_runs_np2": dict(args=ORDER + ["-ts_max_time", "0.4"], ok=True, expect=["results in"],
                             ranks=2),

@@ -66,6 +66,14 @@ CASES = {
                                      "-interface_joint_T2", "1e-8", "-probe_low", "0.05,0.25",
                                      "-output_fields_every", "10"],
                                variants={"fieldsplit_unscaled": ("fieldsplit", UNSCALED)}),
+    # order 2 (Taylor-Hood; docs/elements.md): the displacement nodes on edges and faces too,
+    # in the node blocks of vertex_blocks and the rigid-body modes (keep_factor_tests.cmake)
+    "terzaghi_3d_order2": dict(scene="tests/verification/terzaghi_3d.opts",
+                               args=["-displacement_order", "2", "-ts_dt", "0.25",
+                                     "-ts_max_time", "2", "-output_fields_every", "4"]),
+    "elastic_3d_order2": dict(scene="tests/verification/terzaghi_3d.opts", elastic=True,
+                              args=["-displacement_order", "2", "-ts_dt", "0.25",
+                                    "-ts_max_time", "0.5", "-output_fields_every", "1"]),
 }
 
 
