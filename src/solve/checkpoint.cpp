@@ -153,10 +153,15 @@ PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
   const std::vector<double> history = run.problem.interfaces().committedHistory();
   const std::vector<double> times = run.fields.times();
   const std::vector<double> interface_times = run.interface_fields.times();
+  std::vector<double> steady, steady_conditions;
+  PetscCall(run.steady.kept(steady, steady_conditions));
+  PetscInt has_steady = steady.empty() ? 0 : 1, all_steady = 0;
+  PetscCallMPI(MPI_Allreduce(&has_steady, &all_steady, 1, MPIU_INT, MPI_MIN, comm));
   { // a full disk ends the run here, on every rank, before a partial checkpoint
     PetscInt n;
     PetscCall(VecGetLocalSize(X, &n));
-    const double values = 2.0 * n + history.size() + run.problem.skeletonHistoryValues() + 3;
+    const double values =
+        2.0 * n + history.size() + run.problem.skeletonHistoryValues() + 3 + steady.size();
     const double listed = rank == 0 ? times.size() + interface_times.size() : 0;
     PetscCall(reserveSpace(comm, dir, *path, 8.0 * (values + listed),
                            "the checkpoint of step " + std::to_string(run.step)));
@@ -176,6 +181,11 @@ PetscErrorCode writeCheckpoint(Run &run, Vec X, std::string *path)
   }
   PetscCall(writeValues(viewer, comm, "output_times", times.data(),
                         rank == 0 ? (PetscInt)times.size() : 0));
+  if (all_steady) { // the steady pore pressure kept (steady_pressure.hpp), for an exact restart
+    PetscCall(writeValues(viewer, comm, "steady_pressure", steady.data(), (PetscInt)steady.size()));
+    PetscCall(writeValues(viewer, comm, "steady_conditions", steady_conditions.data(),
+                          rank == 0 ? (PetscInt)steady_conditions.size() : 0));
+  }
   CheckpointHeader header;
   PetscCall(writeValues(viewer, comm, "interface_output_times", interface_times.data(),
                         rank == 0 ? (PetscInt)interface_times.size() : 0));
@@ -366,6 +376,34 @@ PetscErrorCode readCheckpoint(Run &run, const std::string &path, Vec X, Checkpoi
       interface_times.resize(interface_count);
       PetscCallMPI(MPI_Bcast(interface_times.data(), (int)interface_count, MPI_DOUBLE, 0, comm));
       info->interface_output_times = interface_times;
+    }
+  }
+  {
+    PetscBool has = PETSC_FALSE;
+    PetscCall(PetscViewerHDF5HasDataset(viewer, "steady_pressure", &has));
+    if (has) { // checkpoints before the steady pressure have none: it is solved anew then
+      PetscInt n, count = 0;
+      Vec probe;
+      std::vector<double> values, conditions;
+      PetscCall(DMGetLocalVector(run.dm, &probe));
+      PetscCall(VecGetLocalSize(probe, &n));
+      PetscCall(DMRestoreLocalVector(run.dm, &probe));
+      PetscCall(readValues(viewer, comm, "steady_pressure", n, values));
+      // The conditions' count: every rank knows it from the dataset's size.
+      PetscCall(PetscViewerHDF5PushGroup(viewer, "/"));
+      {
+        Vec all;
+        PetscCall(VecCreate(comm, &all));
+        PetscCall(PetscObjectSetName((PetscObject)all, "steady_conditions"));
+        PetscCall(VecLoad(all, viewer));
+        PetscCall(VecGetSize(all, &count));
+        PetscCall(VecDestroy(&all));
+      }
+      PetscCall(PetscViewerHDF5PopGroup(viewer));
+      PetscCall(readValues(viewer, comm, "steady_conditions", rank == 0 ? count : 0, conditions));
+      conditions.resize(count);
+      PetscCallMPI(MPI_Bcast(conditions.data(), (int)count, MPI_DOUBLE, 0, comm));
+      PetscCall(run.steady.restore(values, conditions));
     }
   }
   PetscCall(PetscViewerDestroy(&viewer));

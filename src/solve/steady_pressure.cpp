@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include <algorithm>
+
 namespace poroseam {
 namespace simulation_detail {
 
@@ -163,6 +165,42 @@ PetscErrorCode SteadyPressure::compute(const Problem &problem, double t, Vec loc
     have_ = true;
   }
   *steady = steady_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SteadyPressure::kept(std::vector<double> &values,
+                                    std::vector<double> &conditions) const
+{
+  PetscFunctionBeginUser;
+  values.clear();
+  conditions.clear();
+  if (!enabled_ || !defined_ || !have_) PetscFunctionReturn(0);
+  const PetscScalar *a;
+  PetscInt n;
+  PetscCall(VecGetLocalSize(steady_, &n));
+  PetscCall(VecGetArrayRead(steady_, &a));
+  values.assign(a, a + n);
+  PetscCall(VecRestoreArrayRead(steady_, &a));
+  conditions = signature_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SteadyPressure::restore(const std::vector<double> &values,
+                                       const std::vector<double> &conditions)
+{
+  PetscInt n;
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  if (!enabled_ || !defined_) PetscFunctionReturn(0);
+  PetscCall(VecGetLocalSize(steady_, &n));
+  PetscCheck((PetscInt)values.size() == n, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
+             "steady pore pressure of the checkpoint: %zu values, the local vector has %" PetscInt_FMT,
+             values.size(), n);
+  PetscCall(VecGetArray(steady_, &a));
+  std::copy(values.begin(), values.end(), a);
+  PetscCall(VecRestoreArray(steady_, &a));
+  signature_ = conditions;
+  have_ = true;
   PetscFunctionReturn(0);
 }
 

@@ -35,6 +35,13 @@ public:
   PetscErrorCode compute(const Problem &problem, double t, Vec local, Mat J, Vec *steady);
   PetscErrorCode destroy();
 
+  /// For checkpoints: the steady state kept (this rank's local vector) and the conditions it
+  /// was solved for; empty when none is kept. A restart gives them back (restore) so that it
+  /// continues with the steady state the interrupted run had, not one solved anew at the
+  /// restart's displacements (which differs with apertures, and by round-off anyway).
+  PetscErrorCode kept(std::vector<double> &values, std::vector<double> &conditions) const;
+  PetscErrorCode restore(const std::vector<double> &values, const std::vector<double> &conditions);
+
 private:
   /// The values of the hydraulic conditions at t.
   std::vector<double> signature(const Scene &scene, double t) const;

@@ -2,7 +2,7 @@
 """A scene that names no solver gets -solver_preset auto; a failed linear solve is reported as
 such (issue 24, item 1; docs/scenes.md, "Time stepping and solvers"). Label "solvers".
 
---case interfaces_2d: tests/hydraulics/crack_jacking_2d.opts (a buried crack carrying water in
+--case interfaces_2d: options/crack_jacking_2d.opts (a buried crack carrying water in
   porous rock, contact and flow) copied with its solver lines (-ksp_type, -pc_type,
   -pc_factor_mat_solver_type) removed, 10 steps. It must run to its final time, print
   'solver preset direct (auto, the default: 2D, ...)' and record the same in run.yaml
@@ -13,7 +13,7 @@ such (issue 24, item 1; docs/scenes.md, "Time stepping and solvers"). Label "sol
   unknowns), equals the scene with its own lines to 1e-9; and with -solver_auto_threshold 100
   auto chooses the iterative fieldsplit preset, which must equal MUMPS to 1e-6 (the bound of
   tests/mpi/solver_presets.py).
---case linear_failure: the joint column (tests/hydraulics/joint_column_2d.opts) with a solver
+--case linear_failure: the joint column (options/joint_column_2d.opts) with a solver
   that cannot work, -ksp_type gmres -pc_type none -ksp_max_it 2. The run must exit non-zero
   after three attempts of its first step (two cuts for a failed linear solve), with a message
   naming DIVERGED_LINEAR_SOLVE and the Krylov reason DIVERGED_ITS, advising the direct solver
@@ -95,7 +95,7 @@ def default_chosen(checks, out, preset, dim):
 
 def interfaces_2d():
     checks = common.Checks("no solver line: 2D, a crack carrying water in porous rock")
-    scene = os.path.join(TESTS, "hydraulics", "crack_jacking_2d.opts")
+    scene = os.path.join(common.SOURCE, "options", "crack_jacking_2d.opts")
     steps = ["-ts_max_time", "0.1", "-ts_max_steps", "10"]
     plain = common.output_dir("solver_default_2d")
     path, removed = stripped_scene(scene, plain)
@@ -136,7 +136,7 @@ def scene_3d():
 
 def linear_failure():
     checks = common.Checks("a failed linear solve is reported as such")
-    scene = os.path.join(TESTS, "hydraulics", "joint_column_2d.opts")
+    scene = os.path.join(common.SOURCE, "options", "joint_column_2d.opts")
     out = common.output_dir("solver_default_linear_failure")
     path, _ = stripped_scene(scene, out)
     cmd = [common.EXE, "-options_file", path, "-output_dir", out, "-ts_max_time", "2",
