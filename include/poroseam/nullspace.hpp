@@ -2,18 +2,12 @@
 // displacement block attached as its near null space (AMG needs them for elasticity).
 #pragma once
 
+#include "poroseam/mesh_points.hpp" // displacementNodeLocation
 #include "poroseam/scene.hpp"
 #include <petscts.h>
 #include <vector>
 
 namespace poroseam {
-
-/// Where the displacement node of a point lies: the mean of the vertices of its closure (the
-/// vertex itself; at order 2 the midpoint of a straight edge, and the centre of a
-/// quadrilateral or hexahedron, where its bilinear / trilinear map puts the Q2 node).
-/// `coords` is the local coordinate array of `csec` (DMGetCoordinatesLocal).
-PetscErrorCode displacementNodeLocation(DM dm, PetscSection csec, const PetscScalar *coords,
-                                        PetscInt point, int dim, double x[3]);
 
 /// The rigid-body modes (3 in 2D, 6 in 3D; axisymmetric: the 2 translations) of the
 /// displacement at every displacement node, restricted to the free dofs of the split

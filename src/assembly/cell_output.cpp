@@ -7,6 +7,7 @@
 
 #include "cell_stress.hpp"
 
+#include "poroseam/mesh_points.hpp"
 #include "poroseam/stress_recovery.hpp"
 
 #include <petscdmplex.h>
@@ -73,14 +74,7 @@ PetscErrorCode Problem::cellFields(Vec local, CellFields &out) const
     gatherClosure(ca, closures_.coordinates(i), nc, xc.data());
     double eqps = 0.0; // plastic state (cells whose law has history)
     int state = 0;
-    {
-      PetscInt *closure = nullptr, size;
-      cellVertices.clear();
-      PetscCall(DMPlexGetTransitiveClosure(dm_, cell.cell, PETSC_TRUE, &size, &closure));
-      for (PetscInt k = 0; k < 2 * size; k += 2)
-        if (closure[k] >= vStart && closure[k] < vEnd) cellVertices.push_back(closure[k]);
-      PetscCall(DMPlexRestoreTransitiveClosure(dm_, cell.cell, PETSC_TRUE, &size, &closure));
-    }
+    PetscCall(closureVertices(dm_, cell.cell, cellVertices));
     const CellStressState s = cellStressAverage(
         elements_[cell.element], dim_, scene_->axisymmetric, m, scene_->hasPressure() && m.porous,
         xc.data(), x.data(),

@@ -7,25 +7,13 @@
 #include "poroseam/collective_check.hpp"
 #include "poroseam/interface_flow.hpp"
 #include "poroseam/interfaces.hpp"
+#include "poroseam/mesh_points.hpp"
 
 #include <cmath>
 #include <map>
 
 namespace poroseam {
 namespace {
-
-PetscErrorCode closureVertices(DM dm, PetscInt point, std::vector<PetscInt> &vertices)
-{
-  PetscInt vStart, vEnd, n, *pts = nullptr;
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  PetscCall(DMPlexGetTransitiveClosure(dm, point, PETSC_TRUE, &n, &pts));
-  vertices.clear();
-  for (PetscInt i = 0; i < n; ++i)
-    if (pts[2 * i] >= vStart && pts[2 * i] < vEnd) vertices.push_back(pts[2 * i]);
-  PetscCall(DMPlexRestoreTransitiveClosure(dm, point, PETSC_TRUE, &n, &pts));
-  PetscFunctionReturn(0);
-}
 
 PetscErrorCode vertexCoordinates(DM dm, PetscInt v, int dim, double x[3])
 {

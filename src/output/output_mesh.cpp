@@ -2,6 +2,7 @@
 #include "output_mesh.hpp"
 
 #include "poroseam/mesh.hpp"
+#include "poroseam/mesh_points.hpp"
 
 #include <petscdmplex.h>
 #include <petscsf.h>
@@ -99,20 +100,6 @@ const char *xdmfQuadraticTopology(DMPolytopeType ct)
   default:
     return nullptr;
   }
-}
-
-// The vertices in the closure of point p, in closure order.
-PetscErrorCode closureVertices(DM dm, PetscInt p, PetscInt vStart, PetscInt vEnd,
-                               std::vector<PetscInt> &verts)
-{
-  PetscInt *closure = nullptr, n;
-  PetscFunctionBeginUser;
-  verts.clear();
-  PetscCall(DMPlexGetTransitiveClosure(dm, p, PETSC_TRUE, &n, &closure));
-  for (PetscInt i = 0; i < 2 * n; i += 2)
-    if (closure[i] >= vStart && closure[i] < vEnd) verts.push_back(closure[i]);
-  PetscCall(DMPlexRestoreTransitiveClosure(dm, p, PETSC_TRUE, &n, &closure));
-  PetscFunctionReturn(0);
 }
 
 } // namespace
@@ -226,7 +213,7 @@ PetscErrorCode OutputMesh::build(DM dm, PetscInt dispField)
     if (owned[p] && bulkNode[p]) {
       ownedNodes.push_back(p);
       nodeVertices.emplace_back();
-      PetscCall(closureVertices(dm, p, vStart, vEnd, nodeVertices.back()));
+      PetscCall(closureVertices(dm, p, nodeVertices.back()));
     }
   for (PetscInt p : ownedNodes)
     keys.push_back(serial[p]);
@@ -253,7 +240,7 @@ PetscErrorCode OutputMesh::build(DM dm, PetscInt dispField)
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(dm, c, &ct));
     if (!owned[c] || ct != cellType) continue;
-    PetscCall(closureVertices(dm, c, vStart, vEnd, verts));
+    PetscCall(closureVertices(dm, c, verts));
     PetscCheck((PetscInt)verts.size() == corners, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "FieldWriter: cell %" PetscInt_FMT " has %zu vertices in its closure, expected "
                "%" PetscInt_FMT,
@@ -268,7 +255,7 @@ PetscErrorCode OutputMesh::build(DM dm, PetscInt dispField)
       for (PetscInt i = 0; i < 2 * n; i += 2) {
         const PetscInt q = closure[i];
         if (q >= vStart && q < vEnd) continue;
-        PetscCall(closureVertices(dm, q, vStart, vEnd, pointVerts));
+        PetscCall(closureVertices(dm, q, pointVerts));
         std::sort(pointVerts.begin(), pointVerts.end());
         bySpan[pointVerts] = q;
       }
@@ -316,17 +303,12 @@ PetscErrorCode OutputMesh::build(DM dm, PetscInt dispField)
     PetscCall(DMGetCoordinatesLocal(dm, &coords));
     PetscCall(DMGetCoordinateSection(dm, &csec));
     PetscCall(VecGetArrayRead(coords, &ca));
-    for (size_t i = 0; i < ownedNodes.size(); ++i)
-      for (PetscInt v : nodeVertices[i]) {
-        PetscInt dof, off;
-        PetscCall(PetscSectionGetDof(csec, v, &dof));
-        PetscCall(PetscSectionGetOffset(csec, v, &off));
-        PetscCheck(dof == cdim, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                   "FieldWriter: vertex %" PetscInt_FMT " has %" PetscInt_FMT " coordinates", v,
-                   dof);
-        for (PetscInt d = 0; d < cdim; ++d)
-          coordinates[i * cdim + d] += ca[off + d] / (double)nodeVertices[i].size();
-      }
+    for (size_t i = 0; i < ownedNodes.size(); ++i) {
+      double x[3];
+      PetscCall(displacementNodeLocation(dm, csec, ca, ownedNodes[i], (int)cdim, x));
+      for (PetscInt d = 0; d < cdim; ++d)
+        coordinates[i * cdim + d] = x[d];
+    }
     PetscCall(VecRestoreArrayRead(coords, &ca));
   }
   PetscFunctionReturn(0);

@@ -85,31 +85,6 @@ PetscErrorCode displacementRigidBodyModes(DM dm, int dim, bool axisymmetric, IS 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode displacementNodeLocation(DM dm, PetscSection csec, const PetscScalar *coords,
-                                        PetscInt point, int dim, double x[3])
-{
-  PetscInt vStart, vEnd, n, *pts = nullptr, count = 0;
-  PetscFunctionBeginUser;
-  x[0] = x[1] = x[2] = 0.0;
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  PetscCall(DMPlexGetTransitiveClosure(dm, point, PETSC_TRUE, &n, &pts));
-  for (PetscInt k = 0; k < n; ++k) {
-    const PetscInt q = pts[2 * k];
-    if (q < vStart || q >= vEnd) continue;
-    PetscInt off;
-    PetscCall(PetscSectionGetOffset(csec, q, &off));
-    for (int d = 0; d < dim; ++d)
-      x[d] += PetscRealPart(coords[off + d]);
-    ++count;
-  }
-  PetscCall(DMPlexRestoreTransitiveClosure(dm, point, PETSC_TRUE, &n, &pts));
-  PetscCheck(count > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "point %" PetscInt_FMT " has no vertex",
-             point);
-  for (int d = 0; d < dim; ++d)
-    x[d] /= count;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode orthonormalize(std::vector<Vec> &vectors)
 {
   PetscFunctionBeginUser;
