@@ -1,0 +1,677 @@
+// Interface patch test at the solver level (issue 25, item 6): a block on a base with a flat
+// interface x_n = 0.5 between them (n the last axis; meshes/block_on_base_*), two different
+// elastic materials, and an exact solution whose displacement is a polynomial of degree 2 in
+// each body. The exact values are prescribed on every outer face of both bodies (section
+// constraints: the scenes' -bc values are constants, so the test works on the assembled
+// Problem like test_order_mms.cpp); the interface is free. Newton (LU) from zero solves the
+// nonlinear contact problem. At -displacement_order 2 the exact field lies in the discrete
+// space and satisfies the discrete equations, so the solution must reproduce it to round-off:
+// every displacement node, the gap (normal and tangential, in the interface frame) and the
+// traction at every integration point, and the contact state (stick, slip, open) of every
+// point. The same scene at order 1 cannot represent the quadratic fields and must miss them
+// (that is what shows the test can fail).
+//
+// Which quadratic jumps an exact solution can have. A quadratic displacement has a linear
+// stress, so the traction sigma n on the interface is linear along it, and it is the same from
+// both sides. The interface law then fixes what the jump [u] = u_block - u_base may be:
+//   stick: t = K [u] (K_N normal, K_T tangential): the jump is linear along the interface (a
+//          quadratic jump would need a quadratic traction, i.e. cubic displacements). Each body
+//          still has a quadratic field with a quadratic trace on the interface, and the traction
+//          varies along it;
+//   slip:  t_N = -p_N = K_N g_N (the closure is linear) and t_T = mu p_N e along a fixed slip
+//          direction e: the slip g_T = s e may be any quadratic s with K_T s > mu p_N (the trial
+//          traction past the Coulomb limit): a quadratic slip under a linearly varying contact
+//          pressure and friction;
+//   open:  t = 0: the opening and the tangential jump are any quadratics with g_N > 0.
+// So the quadratic slip is tested in slip and the quadratic opening with the open interface;
+// stick has quadratic bodies and a linear jump.
+//
+// Construction of a body's field from its trace w(xi) (quadratic in the tangential coordinates
+// xi) and the interface traction t(xi) (linear): u = w(xi) + zeta A(xi) + zeta^2 c, zeta the
+// normal coordinate (0 on the interface). sigma n = t at zeta = 0 gives A (linear):
+//   tangential i: G (A_i + d_i w_n) = t_i;   normal: lambda (sum_t d_t w_t + A_n) + 2 G A_n = t_n,
+// and equilibrium without body force, (lambda + G) grad div u + G lap u = 0 (a constant),
+// gives c. The test checks the result independently: div sigma by central differences of the
+// (linear) stress, and sigma n of both bodies against t at points of the interface.
+#include "poroseam/interfaces.hpp"
+#include "poroseam/layout.hpp"
+#include "poroseam/mesh.hpp"
+#include "poroseam/problem.hpp"
+#include "poroseam/reference_element.hpp"
+#include "poroseam/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <gtest/gtest.h>
+#include <map>
+#include <petscksp.h>
+#include <string>
+#include <unistd.h> // getpid: a mesh directory per test process (ctest runs them in parallel)
+
+using namespace poroseam;
+
+namespace {
+
+constexpr double kNormalStiffness = 2e9, kTangentialStiffness = 1e9, kFriction = 0.5; // Pa/m, -
+constexpr double kCentre = 0.5; ///< the interface plane and the middle of its square / segment
+
+/// The interface's regime, as physics::ContactState numbers it.
+enum class Regime {
+  open = (int)physics::ContactState::open,
+  stick = (int)physics::ContactState::stick,
+  slip = (int)physics::ContactState::slip
+};
+
+struct Material {
+  double young, poisson;
+  double lambda() const { return young * poisson / ((1 + poisson) * (1 - 2 * poisson)); }
+  double shear() const { return young / (2 * (1 + poisson)); }
+};
+const Material kBase{1e8, 0.25}, kBlock{5e7, 0.35};
+
+/// v_i(xi) = v0_i + v1_it xi_t + 1/2 v2_its xi_t xi_s over the tangential axes t, s < n.
+struct Quadratic {
+  double v0[3] = {0, 0, 0}, v1[3][3] = {{0}}, v2[3][3][3] = {{{0}}};
+  double value(int dim, int i, const double xi[3]) const
+  {
+    double v = v0[i];
+    for (int t = 0; t < dim - 1; ++t) {
+      v += v1[i][t] * xi[t];
+      for (int s = 0; s < dim - 1; ++s)
+        v += 0.5 * v2[i][t][s] * xi[t] * xi[s];
+    }
+    return v;
+  }
+};
+
+/// One body's exact displacement u(y) = w(xi) + zeta A(xi) + zeta^2 c, y = x - centre,
+/// xi = tangential components of y, zeta = y_n.
+struct BodyField {
+  int dim = 2;
+  Quadratic w;
+  double A0[3] = {0, 0, 0}, A1[3][3] = {{0}}, c[3] = {0, 0, 0};
+  Material m;
+
+  void value(const double x[3], double u[3]) const
+  {
+    double y[3] = {0, 0, 0};
+    for (int d = 0; d < dim; ++d)
+      y[d] = x[d] - kCentre;
+    const double zeta = y[dim - 1];
+    for (int i = 0; i < dim; ++i) {
+      double a = A0[i];
+      for (int t = 0; t < dim - 1; ++t)
+        a += A1[i][t] * y[t];
+      u[i] = w.value(dim, i, y) + zeta * a + zeta * zeta * c[i];
+    }
+  }
+  void gradient(const double x[3], double g[3][3]) const
+  {
+    double y[3] = {0, 0, 0};
+    for (int d = 0; d < dim; ++d)
+      y[d] = x[d] - kCentre;
+    const int n = dim - 1;
+    const double zeta = y[n];
+    for (int i = 0; i < dim; ++i) {
+      for (int t = 0; t < n; ++t) {
+        g[i][t] = w.v1[i][t] + zeta * A1[i][t];
+        for (int s = 0; s < n; ++s)
+          g[i][t] += w.v2[i][t][s] * y[s];
+      }
+      g[i][n] = A0[i] + 2.0 * zeta * c[i];
+      for (int t = 0; t < n; ++t)
+        g[i][n] += A1[i][t] * y[t];
+    }
+  }
+  void stress(const double x[3], double sigma[3][3]) const
+  {
+    double g[3][3];
+    gradient(x, g);
+    double div = 0.0;
+    for (int i = 0; i < dim; ++i)
+      div += g[i][i];
+    for (int i = 0; i < dim; ++i)
+      for (int j = 0; j < dim; ++j)
+        sigma[i][j] = m.shear() * (g[i][j] + g[j][i]) + (i == j ? m.lambda() * div : 0.0);
+  }
+};
+
+/// The field of a body of material m with trace w on the interface and traction t = sigma n
+/// there (t linear: t.v2 = 0); see the header.
+BodyField buildBody(int dim, const Material &m, const Quadratic &w, const Quadratic &t)
+{
+  BodyField b;
+  b.dim = dim;
+  b.m = m;
+  b.w = w;
+  const int n = dim - 1;
+  const double lambda = m.lambda(), G = m.shear();
+  double div_w0 = 0.0, div_w1[3] = {0, 0, 0}; // sum_t d_t w_t: its value at xi = 0 and slope
+  for (int t = 0; t < n; ++t) {
+    div_w0 += w.v1[t][t];
+    for (int s = 0; s < n; ++s)
+      div_w1[s] += w.v2[t][t][s];
+  }
+  for (int i = 0; i < n; ++i) {
+    b.A0[i] = t.v0[i] / G - w.v1[n][i];
+    for (int s = 0; s < n; ++s)
+      b.A1[i][s] = t.v1[i][s] / G - w.v2[n][i][s];
+  }
+  b.A0[n] = (t.v0[n] - lambda * div_w0) / (lambda + 2 * G);
+  for (int s = 0; s < n; ++s)
+    b.A1[n][s] = (t.v1[n][s] - lambda * div_w1[s]) / (lambda + 2 * G);
+  // (lambda + G) d_i div u + G lap u_i = 0, lap u_i = sum_t d_tt w_i + 2 c_i.
+  double dA = 0.0, lap_wn = 0.0;
+  for (int t = 0; t < n; ++t) {
+    dA += b.A1[t][t];
+    lap_wn += w.v2[n][t][t];
+  }
+  for (int i = 0; i < n; ++i) {
+    double lap_wi = 0.0;
+    for (int t = 0; t < n; ++t)
+      lap_wi += w.v2[i][t][t];
+    b.c[i] = -((lambda + G) * (div_w1[i] + b.A1[n][i]) + G * lap_wi) / (2 * G);
+  }
+  b.c[n] = -((lambda + G) * dA + G * lap_wn) / (2 * lambda + 4 * G);
+  return b;
+}
+
+/// Fixed "arbitrary" numbers in [-1, 1] for coefficients.
+double coefficient(int i, int j, int k)
+{
+  return std::sin(1.0 + i + 3.1 * j + 7.3 * k);
+}
+
+/// The exact solution of a regime: both bodies, the interface traction and the jump.
+struct Exact {
+  int dim = 2;
+  Regime regime = Regime::stick;
+  Quadratic traction, jump;
+  BodyField base, block;
+  double slip_direction[3] = {0, 0, 0}; ///< e (slip): global, tangential
+};
+
+Exact exactSolution(int dim, Regime regime)
+{
+  Exact e;
+  e.dim = dim;
+  e.regime = regime;
+  const int n = dim - 1;
+  // The base's trace: a general quadratic (every component, every monomial), about 1 mm.
+  Quadratic w_base;
+  for (int i = 0; i < dim; ++i) {
+    w_base.v0[i] = 1e-3 * coefficient(i, 0, 0);
+    for (int t = 0; t < n; ++t) {
+      w_base.v1[i][t] = 1e-3 * coefficient(i, t + 1, 0);
+      for (int s = 0; s <= t; ++s)
+        w_base.v2[i][t][s] = w_base.v2[i][s][t] = 2e-3 * coefficient(i, t + 1, s + 1);
+    }
+  }
+  // Contact pressure p_N = 1e5 Pa (1 + 0.3 xi_0 + 0.2 xi_1) > 0 on |xi| <= 0.5.
+  Quadratic normal; // sigma_nn
+  normal.v0[n] = -1e5;
+  normal.v1[n][0] = -0.3e5;
+  if (dim == 3) normal.v1[n][1] = -0.2e5;
+  Quadratic &t = e.traction, &g = e.jump;
+  switch (regime) {
+  case Regime::stick:
+    // Shear within the friction limit everywhere: |tau| <= 3.1e4 < mu p_N >= 3.75e4 Pa; the
+    // jump t / K is linear.
+    t = normal;
+    t.v0[0] = 2e4, t.v1[0][0] = -0.8e4;
+    if (dim == 3) t.v1[0][1] = 0.6e4, t.v0[1] = -1e4, t.v1[1][0] = -0.5e4, t.v1[1][1] = 0.2e4;
+    for (int i = 0; i < dim; ++i) {
+      const double K = i == n ? kNormalStiffness : kTangentialStiffness;
+      g.v0[i] = t.v0[i] / K;
+      for (int s = 0; s < n; ++s)
+        g.v1[i][s] = t.v1[i][s] / K;
+    }
+    break;
+  case Regime::slip: {
+    // tau = mu p_N e, the slip s e quadratic with K_T s >= 1.3e5 Pa > mu p_N <= 6.25e4 Pa.
+    const double angle = dim == 3 ? M_PI / 6 : 0.0;
+    e.slip_direction[0] = std::cos(angle);
+    if (dim == 3) e.slip_direction[1] = std::sin(angle);
+    t = normal;
+    g.v0[n] = normal.v0[n] / kNormalStiffness;
+    for (int s = 0; s < n; ++s)
+      g.v1[n][s] = normal.v1[n][s] / kNormalStiffness;
+    Quadratic slip; // s(xi) in component 0
+    slip.v0[0] = 2e-4;
+    slip.v1[0][0] = 0.8e-4, slip.v2[0][0][0] = 3.2e-4;
+    if (dim == 3)
+      slip.v1[0][1] = -0.6e-4, slip.v2[0][1][1] = 2.4e-4, slip.v2[0][0][1] = -1e-4,
+      slip.v2[0][1][0] = -1e-4;
+    for (int k = 0; k < n; ++k) {
+      const double ek = e.slip_direction[k];
+      t.v0[k] = -kFriction * normal.v0[n] * ek;
+      g.v0[k] = slip.v0[0] * ek;
+      for (int s = 0; s < n; ++s) {
+        t.v1[k][s] = -kFriction * normal.v1[n][s] * ek;
+        g.v1[k][s] = slip.v1[0][s] * ek;
+        for (int r = 0; r < n; ++r)
+          g.v2[k][s][r] = slip.v2[0][s][r] * ek;
+      }
+    }
+    break;
+  }
+  case Regime::open:
+    // No traction; opening 1e-4 m (1 + 0.3 xi_0 + 1.6 xi_0^2 ...) > 0, any tangential jump.
+    for (int i = 0; i < dim; ++i) {
+      g.v0[i] = i == n ? 1e-4 : 5e-5 * coefficient(i, 5, 0);
+      for (int s = 0; s < n; ++s) {
+        g.v1[i][s] = i == n ? 0.3e-4 * (s + 1) : 5e-5 * coefficient(i, 5, s + 1);
+        for (int r = 0; r <= s; ++r)
+          g.v2[i][s][r] = g.v2[i][r][s] =
+              i == n ? (r == s ? 3.2e-4 : -0.4e-4) : 1e-4 * coefficient(i, s + 6, r);
+      }
+    }
+    break;
+  }
+  Quadratic w_block = w_base;
+  for (int i = 0; i < dim; ++i) {
+    w_block.v0[i] += g.v0[i];
+    for (int s = 0; s < n; ++s) {
+      w_block.v1[i][s] += g.v1[i][s];
+      for (int r = 0; r < n; ++r)
+        w_block.v2[i][s][r] += g.v2[i][s][r];
+    }
+  }
+  e.base = buildBody(dim, kBase, w_base, t);
+  e.block = buildBody(dim, kBlock, w_block, t);
+  return e;
+}
+
+/// Independent check of the construction: div sigma = 0 in both bodies (central differences of
+/// the linear stress: exact up to round-off) and sigma n = t from both sides on the interface.
+/// Returns the largest violation relative to the stress scale (1e5 Pa).
+double constructionDefect(const Exact &e)
+{
+  const int dim = e.dim, n = dim - 1;
+  double worst = 0.0;
+  const double h = 0.1, scale = 1e5;
+  for (const BodyField *b : {&e.base, &e.block})
+    for (double a : {0.1, 0.7})
+      for (double z : {0.2, 0.8}) {
+        double x[3] = {a, dim == 3 ? 1.0 - a : z, z};
+        for (int i = 0; i < dim; ++i) {
+          double div = 0.0;
+          for (int j = 0; j < dim; ++j) {
+            double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
+            xp[j] += h, xm[j] -= h;
+            double sp[3][3], sm[3][3];
+            b->stress(xp, sp);
+            b->stress(xm, sm);
+            div += (sp[i][j] - sm[i][j]) / (2 * h);
+          }
+          worst = std::max(worst, std::fabs(div) / scale);
+        }
+      }
+  for (double a : {0.0, 0.3, 1.0})
+    for (double c : {0.0, 0.6, 1.0}) {
+      double x[3] = {a, c, c};
+      x[n] = kCentre;
+      double xi[3] = {a - kCentre, c - kCentre, 0};
+      for (const BodyField *b : {&e.base, &e.block}) {
+        double s[3][3];
+        b->stress(x, s);
+        for (int i = 0; i < dim; ++i)
+          worst = std::max(worst, std::fabs(s[i][n] - e.traction.value(dim, i, xi)) / scale);
+      }
+    }
+  return worst;
+}
+
+PetscErrorCode setOption(const char *name, const std::string &value)
+{
+  return PetscOptionsSetValue(nullptr, name, value.c_str());
+}
+
+struct Case {
+  const char *name;
+  const char *mesh;
+  double size_factor;
+  const char *integration;
+  Regime regime;
+};
+
+struct Outcome {
+  double node_error = 0, node_scale = 0;     ///< max |u_h - u| and max |u| over displacement nodes
+  double gap_error = 0, gap_scale = 0;       ///< at the integration points, interface frame
+  double traction_error = 0;                 ///< max |t_h - t| over the points [Pa]
+  double side_error = 0;                     ///< max |u_h - u| of either side at the points
+  double cell_error = 0;                     ///< max |u_h - u| at the cells' quadrature points
+  double strain_error = 0, strain_scale = 0; ///< max |grad u_h - grad u| there, max |grad u|
+  int states[3] = {0, 0, 0}, points = 0;     ///< physics::ContactState counts
+  int newton = 0, unknowns = 0;
+  bool converged = false;
+};
+
+PetscErrorCode solvePatch(const Case &c, int order, const Exact &ex, Outcome *out)
+{
+  DM dm;
+  Scene scene;
+  std::vector<PhysicalName> names;
+  int dim;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsClear(nullptr));
+  const std::string src = POROSEAM_SOURCE_DIR;
+  PetscCall(setOption("-mesh", src + "/meshes/" + c.mesh));
+  PetscCall(setOption("-displacement_order", std::to_string(order)));
+  PetscCall(setOption("-regions", "base,block"));
+  for (const char *r : {"base", "block"}) {
+    const Material &m = std::string(r) == "base" ? kBase : kBlock;
+    const std::string p = std::string("-region_") + r + "_";
+    PetscCall(setOption((p + "material").c_str(), "elastic"));
+    PetscCall(setOption((p + "E").c_str(), std::to_string(m.young)));
+    PetscCall(setOption((p + "nu").c_str(), std::to_string(m.poisson)));
+  }
+  PetscCall(setOption("-interfaces", "contact"));
+  PetscCall(setOption("-interface_contact_side1", "base"));
+  PetscCall(setOption("-interface_contact_KN", std::to_string(kNormalStiffness)));
+  PetscCall(setOption("-interface_contact_KT", std::to_string(kTangentialStiffness)));
+  PetscCall(setOption("-interface_contact_friction", std::to_string(kFriction)));
+  PetscCall(setOption("-interface_contact_integration", c.integration));
+  // Every outer face of both bodies holds every displacement component; the values set below
+  // are the exact field's (the options' 0 only marks the constraints).
+  std::vector<std::string> outer = {"bottom",     "top",        "base_left",
+                                    "base_right", "block_left", "block_right"};
+  if (ex.dim == 3)
+    for (const char *f : {"base_front", "base_back", "block_front", "block_back"})
+      outer.push_back(f);
+  std::string list;
+  for (const auto &b : outer) {
+    list += (list.empty() ? "" : ",") + b;
+    for (const char *comp : {"ux", "uy", "uz"}) {
+      if (ex.dim == 2 && comp[1] == 'z') continue;
+      PetscCall(setOption(("-bc_" + b + "_" + comp).c_str(), "0"));
+    }
+  }
+  PetscCall(setOption("-boundaries", list));
+  PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
+  PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
+                         testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
+                         &names, &dim));
+  PetscCheck(dim == ex.dim, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "mesh %s is %dD", c.mesh, dim);
+  PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
+  PetscCall(splitInterfaces(&dm, scene));
+  PetscCall(markLayoutLabels(dm, scene));
+  PetscCall(createSolutionSection(dm, scene));
+  Problem problem;
+  PetscCall(problem.setup(dm, scene));
+
+  // The block's points: the closure of its cells (after the split, the interface's side-2
+  // copies belong to the block's cells only).
+  DMLabel cellSets;
+  PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
+  int blockTag = 0, baseTag = 0;
+  for (const auto &nm : names) {
+    if (nm.name == "block") blockTag = nm.tag;
+    if (nm.name == "base") baseTag = nm.tag;
+  }
+  PetscInt pStart, pEnd, cStart, cEnd, vStart, vEnd;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  std::vector<char> inBlock(pEnd - pStart, 0);
+  for (PetscInt cell = cStart; cell < cEnd; ++cell) {
+    PetscInt tag;
+    PetscCall(DMLabelGetValue(cellSets, cell, &tag));
+    if (tag != blockTag) continue;
+    PetscInt np, *pts = nullptr;
+    PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &np, &pts));
+    for (PetscInt k = 0; k < np; ++k)
+      inBlock[pts[2 * k] - pStart] = 1;
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &np, &pts));
+  }
+
+  // The exact field at every displacement node (a node sits at the mean of its point's
+  // vertices on these straight-sided cells; order 1: the vertices only).
+  PetscSection s, cs;
+  Vec local, exact, rate, flocal, coords, X, F, dX;
+  PetscCall(DMGetLocalSection(dm, &s));
+  PetscCall(DMGetCoordinateSection(dm, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMCreateLocalVector(dm, &local));
+  for (Vec *v : {&exact, &rate, &flocal})
+    PetscCall(VecDuplicate(local, v));
+  PetscCall(DMCreateGlobalVector(dm, &X));
+  PetscCall(VecDuplicate(X, &F));
+  PetscCall(VecDuplicate(X, &dX));
+  PetscCall(VecGetSize(X, &out->unknowns));
+  {
+    PetscScalar *u;
+    const PetscScalar *xa;
+    PetscCall(VecSet(exact, 0.0));
+    PetscCall(VecGetArray(exact, &u));
+    PetscCall(VecGetArrayRead(coords, &xa));
+    for (PetscInt pt = pStart; pt < pEnd; ++pt) {
+      PetscInt dof, off;
+      PetscCall(PetscSectionGetFieldDof(s, pt, kDisplacementField, &dof));
+      if (!dof) continue;
+      PetscCall(PetscSectionGetFieldOffset(s, pt, kDisplacementField, &off));
+      PetscInt np, *pts = nullptr, nv = 0;
+      double x[3] = {0, 0, 0};
+      PetscCall(DMPlexGetTransitiveClosure(dm, pt, PETSC_TRUE, &np, &pts));
+      for (PetscInt k = 0; k < np; ++k) {
+        if (pts[2 * k] < vStart || pts[2 * k] >= vEnd) continue;
+        PetscInt xo;
+        PetscCall(PetscSectionGetOffset(cs, pts[2 * k], &xo));
+        for (int d = 0; d < dim; ++d)
+          x[d] += xa[xo + d];
+        ++nv;
+      }
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, pt, PETSC_TRUE, &np, &pts));
+      for (int d = 0; d < dim; ++d)
+        x[d] /= nv;
+      double ue[3];
+      (inBlock[pt - pStart] ? ex.block : ex.base).value(x, ue);
+      for (int k = 0; k < dim; ++k)
+        u[off + k] = ue[k];
+    }
+    PetscCall(VecRestoreArrayRead(coords, &xa));
+    PetscCall(VecRestoreArray(exact, &u));
+  }
+  // Newton from zero inside: the constrained entries of the local vector keep the exact
+  // values (the global vector does not hold them).
+  PetscCall(VecCopy(exact, local));
+  PetscCall(VecSet(X, 0.0));
+  PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
+  PetscCall(VecSet(rate, 0.0));
+  const ResidualMode mode{1.0, true, 0.0};
+  Mat J;
+  KSP ksp;
+  PC pc;
+  PetscCall(DMCreateMatrix(dm, &J));
+  PetscCall(KSPCreate(PETSC_COMM_SELF, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  double uscale;
+  PetscCall(VecNorm(exact, NORM_INFINITY, &uscale));
+  for (out->newton = 1; out->newton <= 25; ++out->newton) {
+    PetscCall(problem.residual(0.0, local, rate, mode, flocal));
+    PetscCall(VecSet(F, 0.0));
+    PetscCall(DMLocalToGlobal(dm, flocal, ADD_VALUES, F));
+    PetscCall(problem.jacobian(0.0, 0.0, local, rate, mode, J));
+    PetscCall(KSPSetOperators(ksp, J, J));
+    PetscCall(KSPSolve(ksp, F, dX));
+    PetscCall(VecAXPY(X, -1.0, dX));
+    PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
+    double step;
+    PetscCall(VecNorm(dX, NORM_INFINITY, &step));
+    if (step <= 1e-13 * uscale) {
+      out->converged = true;
+      break;
+    }
+  }
+
+  // Every displacement node against the exact field.
+  {
+    Vec diff;
+    PetscCall(VecDuplicate(local, &diff));
+    PetscCall(VecWAXPY(diff, -1.0, exact, local));
+    PetscCall(VecNorm(diff, NORM_INFINITY, &out->node_error));
+    out->node_scale = uscale;
+    PetscCall(VecDestroy(&diff));
+  }
+  // The field between the nodes: displacement and gradient at the quadrature points of every
+  // bulk cell (the order-2 element's rule, degree 4, at both orders), from the closure by the
+  // node basis (order 2) or the vertex basis (order 1).
+  {
+    std::map<int, ReferenceElement> elements;
+    PointGeometry g;
+    for (PetscInt cell = cStart; cell < cEnd; ++cell) {
+      PetscInt tag;
+      PetscCall(DMLabelGetValue(cellSets, cell, &tag));
+      if (tag != blockTag && tag != baseTag) continue; // the interface's cohesive cells
+      const BodyField &body = tag == blockTag ? ex.block : ex.base;
+      DMPolytopeType ct;
+      PetscCall(DMPlexGetCellType(dm, cell, &ct));
+      if (!elements.count((int)ct)) PetscCall(ReferenceElement::create(ct, &elements[(int)ct], 2));
+      const ReferenceElement &e = elements[(int)ct];
+      PetscScalar *xc = nullptr, *xu = nullptr;
+      PetscInt nc = 0, nu = 0;
+      PetscCall(DMPlexVecGetClosure(dm, cs, coords, cell, &nc, &xc));
+      PetscCall(DMPlexVecGetClosure(dm, s, local, cell, &nu, &xu));
+      const int nn = order == 1 ? e.num_vertices : e.num_nodes;
+      PetscCheck(nu == nn * dim, PETSC_COMM_SELF, PETSC_ERR_PLIB, "closure of cell %d: %d values",
+                 (int)cell, (int)nu);
+      for (int q = 0; q < e.num_quadrature; ++q) {
+        PetscCheck(mapQuadraturePoint(e, xc, q, g) > 0.0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                   "inverted cell %d", (int)cell);
+        const double *N = order == 1 ? g.phi : g.node_phi;
+        const double *dN = order == 1 ? g.grad_phi : g.grad_node_phi;
+        double ue[3], ge[3][3];
+        body.value(g.x, ue);
+        body.gradient(g.x, ge);
+        for (int i = 0; i < dim; ++i) {
+          double uh = 0.0, gh[3] = {0, 0, 0};
+          for (int a = 0; a < nn; ++a) {
+            uh += N[a] * xu[a * dim + i];
+            for (int j = 0; j < dim; ++j)
+              gh[j] += dN[a * dim + j] * xu[a * dim + i];
+          }
+          out->cell_error = std::max(out->cell_error, std::fabs(uh - ue[i]));
+          for (int j = 0; j < dim; ++j) {
+            out->strain_error = std::max(out->strain_error, std::fabs(gh[j] - ge[i][j]));
+            out->strain_scale = std::max(out->strain_scale, std::fabs(ge[i][j]));
+          }
+        }
+      }
+      PetscCall(DMPlexVecRestoreClosure(dm, s, local, cell, &nu, &xu));
+      PetscCall(DMPlexVecRestoreClosure(dm, cs, coords, cell, &nc, &xc));
+    }
+  }
+  // The gap (interface frame) and the traction at every integration point.
+  const int n = dim - 1;
+  PetscCall(problem.interfaces().visit(
+      local, InterfaceRates{}, [&](int, int, PetscInt, const InterfacePointState &st) {
+        double ub[3], ua[3], jump[3] = {0, 0, 0}, exact_gap[3] = {0, 0, 0}, xi[3] = {0, 0, 0};
+        ex.block.value(st.x, ub);
+        ex.base.value(st.x, ua);
+        for (int k = 0; k < dim; ++k)
+          jump[k] = ub[k] - ua[k];
+        for (int i = 0; i < dim; ++i)
+          for (int k = 0; k < dim; ++k)
+            exact_gap[i] += st.frame[i][k] * jump[k];
+        const double got[3] = {st.gap_normal, st.gap_tangential[0], st.gap_tangential[1]};
+        for (int k = 0; k < dim; ++k)
+          out->side_error = std::max({out->side_error, std::fabs(st.displacement1[k] - ua[k]),
+                                      std::fabs(st.displacement2[k] - ub[k])});
+        for (int i = 0; i < dim; ++i) {
+          out->gap_error = std::max(out->gap_error, std::fabs(got[i] - exact_gap[i]));
+          out->gap_scale = std::max(out->gap_scale, std::fabs(exact_gap[i]));
+        }
+        // The traction on side 1 (the base) from side 2: sigma n, n from base to block.
+        for (int t = 0; t < n; ++t)
+          xi[t] = st.x[t] - kCentre;
+        for (int i = 0; i < dim; ++i)
+          out->traction_error = std::max(out->traction_error,
+                                         std::fabs(st.traction[i] - ex.traction.value(dim, i, xi)));
+        ++out->states[(int)st.response.state];
+        ++out->points;
+      }));
+
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(MatDestroy(&J));
+  for (Vec *v : {&local, &exact, &rate, &flocal, &X, &F, &dX})
+    PetscCall(VecDestroy(v));
+  PetscCall(problem.release());
+  PetscCall(DMDestroy(&dm));
+  PetscCall(PetscOptionsClear(nullptr));
+  PetscFunctionReturn(0);
+}
+
+const char *regimeName(Regime r)
+{
+  return r == Regime::stick ? "stick" : r == Regime::slip ? "slip" : "open";
+}
+
+} // namespace
+
+class QuadJumpPatch : public ::testing::TestWithParam<Case> {};
+
+TEST_P(QuadJumpPatch, Order2ExactOrder1Not)
+{
+  const Case c = GetParam();
+  const int dim = std::string(c.mesh).find("_3d") != std::string::npos ? 3 : 2;
+  const Exact ex = exactSolution(dim, c.regime);
+  const double defect = constructionDefect(ex);
+  std::printf("%s: exact field's own defect (div sigma, sigma n - t) %.1e of 1e5 Pa\n", c.name,
+              defect);
+  ASSERT_LT(defect, 1e-12) << "the exact solution is not one";
+  const double traction_scale = 1e5;
+  Outcome o[3];
+  for (int order : {2, 1}) {
+    ASSERT_EQ(solvePatch(c, order, ex, &o[order]), 0);
+    const Outcome &r = o[order];
+    std::printf("%s order %d: %d unknowns, Newton %d%s; max |u_h - u| / max |u| at the nodes "
+                "%.2e, the cells' points %.2e, the interface points %.2e; max |grad (u_h - u)| / "
+                "max |grad u| %.2e; gaps %.2e; traction max |t_h - t| / 1e5 Pa = %.2e; open %d, "
+                "stick %d, slip %d of %d points\n",
+                c.name, order, r.unknowns, r.newton, r.converged ? "" : " (not converged)",
+                r.node_error / r.node_scale, r.cell_error / r.node_scale,
+                r.side_error / r.node_scale, r.strain_error / r.strain_scale,
+                r.gap_error / r.gap_scale, r.traction_error / traction_scale, r.states[0],
+                r.states[1], r.states[2], r.points);
+  }
+  const Outcome &q = o[2], &l = o[1];
+  ASSERT_TRUE(q.converged);
+  ASSERT_GT(q.points, 0);
+  EXPECT_EQ(q.states[(int)c.regime], q.points)
+      << "not every point is in the " << regimeName(c.regime) << " state";
+  EXPECT_LT(q.node_error / q.node_scale, 1e-9);
+  EXPECT_LT(q.side_error / q.node_scale, 1e-9);
+  EXPECT_LT(q.cell_error / q.node_scale, 1e-9);
+  EXPECT_LT(q.strain_error / q.strain_scale, 1e-9);
+  EXPECT_LT(q.gap_error / q.gap_scale, 1e-9);
+  EXPECT_LT(q.traction_error / traction_scale, 1e-9);
+  // Order 1: the same scene; linear elements cannot hold the quadratic fields between the
+  // nodes. (Their nodal values can be exact on these uniform meshes: the linear elements'
+  // stencil there is exact for quadratics without body force, a nodal superconvergence; and
+  // in stick the jump is linear. So the field is compared inside the cells as well.)
+  EXPECT_GT(std::max({l.node_error / l.node_scale, l.cell_error / l.node_scale,
+                      l.strain_error / l.strain_scale, l.gap_error / l.gap_scale}),
+            1e-4)
+      << "order 1 reproduced the quadratic solution: the test would not see a wrong order 2";
+}
+
+// Each regime on quadrilaterals / hexahedra and triangles / tetrahedra; both rules where the
+// faces have them (nodal Simpson: segments and quadrilaterals only). Simpson integrates the
+// interface terms exactly here: the traction is linear, times a quadratic test function.
+INSTANTIATE_TEST_SUITE_P(
+    Interfaces, QuadJumpPatch,
+    ::testing::Values(
+        Case{"stick2d_quad", "block_on_base_2d.geo", 1.0, "gauss", Regime::stick},
+        Case{"slip2d_quad_nodal", "block_on_base_2d.geo", 1.0, "nodal", Regime::slip},
+        Case{"open2d_quad", "block_on_base_2d.geo", 1.0, "gauss", Regime::open},
+        Case{"stick2d_tri_nodal", "block_on_base_2d_tri.geo", 1.0, "nodal", Regime::stick},
+        Case{"slip2d_tri", "block_on_base_2d_tri.geo", 1.0, "gauss", Regime::slip},
+        Case{"stick3d_hex_nodal", "block_on_base_3d.geo", 1.5, "nodal", Regime::stick},
+        Case{"slip3d_hex", "block_on_base_3d.geo", 1.5, "gauss", Regime::slip},
+        Case{"stick3d_tet", "block_on_base_3d_tet.geo", 1.5, "gauss", Regime::stick},
+        Case{"slip3d_tet", "block_on_base_3d_tet.geo", 1.5, "gauss", Regime::slip},
+        Case{"open3d_tet", "block_on_base_3d_tet.geo", 1.5, "gauss", Regime::open}),
+    [](const auto &info) { return std::string(info.param.name); });
