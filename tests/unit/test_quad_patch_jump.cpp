@@ -45,6 +45,7 @@
 #include <cstdio>
 #include <gtest/gtest.h>
 #include <map>
+#include <ostream>
 #include <petscksp.h>
 #include <string>
 #include <unistd.h> // getpid: a mesh directory per test process (ctest runs them in parallel)
@@ -335,6 +336,12 @@ struct Case {
   const char *integration;
   Regime regime;
 };
+
+/// For gtest's messages: the case's name instead of its bytes.
+void PrintTo(const Case &c, std::ostream *os)
+{
+  *os << c.name;
+}
 
 struct Outcome {
   double node_error = 0, node_scale = 0;     ///< max |u_h - u| and max |u| over displacement nodes
