@@ -6,10 +6,13 @@
 // Problem like test_order_mms.cpp); the interface is free. Newton (LU) from zero solves the
 // nonlinear contact problem. At -displacement_order 2 the exact field lies in the discrete
 // space and satisfies the discrete equations, so the solution must reproduce it to round-off:
-// every displacement node, the gap (normal and tangential, in the interface frame) and the
-// traction at every integration point, and the contact state (stick, slip, open) of every
-// point. The same scene at order 1 cannot represent the quadratic fields and must miss them
-// (that is what shows the test can fail).
+// every displacement node; the displacement and its gradient at every quadrature point of
+// every cell; both sides' displacements, the gap (normal and tangential, in the interface
+// frame) and the traction at every interface integration point; and the contact state (stick,
+// slip, open) of every point. The same scene at order 1 cannot represent the quadratic fields
+// and must miss them (that is what shows the test can fail). Also checked by hand: the
+// interface terms taken with the faces' vertex basis instead of their node basis fail every
+// case (docs/verification.md).
 //
 // Which quadratic jumps an exact solution can have. A quadratic displacement has a linear
 // stress, so the traction sigma n on the interface is linear along it, and it is the same from
