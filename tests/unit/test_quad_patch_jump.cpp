@@ -27,7 +27,13 @@
 //          pressure and friction;
 //   open:  t = 0: the opening and the tangential jump are any quadratics with g_N > 0.
 // So the quadratic slip is tested in slip and the quadratic opening with the open interface;
-// stick has quadratic bodies and a linear jump.
+// stick has quadratic bodies and a linear jump. A quadratic opening and slip in stick needs a
+// load on the interface, which the cases "_loaded" manufacture: the jump gets a quadratic part
+// q and the faces a load pair s = K q (-s on side 1, +s on side 2), integrated by the test
+// with each face's own basis and a degree-4 rule, not through the interface assembly. Those
+// cases use the Gauss rule: Simpson's (nodal) rule is not exact for the quadratic K [u] times
+// a quadratic test function (measured: gaps off by 5e-4 relative), a quadrature error rather
+// than a fault; with the physical traction (linear) above it is exact.
 //
 // Construction of a body's field from its trace w(xi) (quadratic in the tangential coordinates
 // xi) and the interface traction t(xi) (linear): u = w(xi) + zeta A(xi) + zeta^2 c, zeta the
