@@ -2,6 +2,8 @@
 // kept as quadrilaterals / hexahedra or split into triangles (2 per square) / tetrahedra (6 per
 // cube, Kuhn), with the vertices moved by a smooth map so that cells are neither uniform nor
 // (tensor cells) affine. "Cell Sets" = 1 on every cell, "Face Sets" = 1 on every boundary face.
+// With an interface (n even): "Cell Sets" = 2 beyond the plane x = 1/2, which the map keeps
+// straight, and "Face Sets" = 2 on the faces in that plane.
 // Built with DMPlexCreateFromCellListPetsc (PETSc 3.18 has no simplex generator here).
 #pragma once
 
@@ -22,7 +24,8 @@ inline void distort(int dim, double amplitude, double *x)
     x[d] += amplitude * s * (d == 0 ? 1.0 : -0.7);
 }
 
-inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double amplitude, DM *dm)
+inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double amplitude, DM *dm,
+                                      bool interface = false)
 {
   PetscFunctionBeginUser;
   const int nv1 = n + 1;
@@ -111,9 +114,43 @@ inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double ampli
   PetscCall(DMGetLabel(*dm, "Face Sets", &faceSets));
   PetscInt cStart, cEnd;
   PetscCall(DMPlexGetHeightStratum(*dm, 0, &cStart, &cEnd));
-  for (PetscInt c = cStart; c < cEnd; ++c)
-    PetscCall(DMLabelSetValue(cellSets, c, 1));
+  // The mean x of a point's vertices, and whether they all lie on the plane x = 1/2.
+  Vec xv;
+  PetscSection cs;
+  PetscCall(DMGetCoordinatesLocal(*dm, &xv));
+  PetscCall(DMGetCoordinateSection(*dm, &cs));
+  auto meanX = [&](PetscInt point, double *mean, bool *onPlane) -> PetscErrorCode {
+    PetscScalar *xc = nullptr;
+    PetscInt nc = 0;
+    PetscFunctionBeginUser;
+    PetscCall(DMPlexVecGetClosure(*dm, cs, xv, point, &nc, &xc));
+    *mean = 0.0, *onPlane = true;
+    for (PetscInt a = 0; a < nc / dim; ++a) {
+      *mean += xc[a * dim] / (nc / dim);
+      *onPlane = *onPlane && std::fabs(xc[a * dim] - 0.5) < 1e-12;
+    }
+    PetscCall(DMPlexVecRestoreClosure(*dm, cs, xv, point, &nc, &xc));
+    PetscFunctionReturn(0);
+  };
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    double x;
+    bool on;
+    PetscCall(meanX(c, &x, &on));
+    PetscCall(DMLabelSetValue(cellSets, c, interface && x > 0.5 ? 2 : 1));
+  }
   PetscCall(DMPlexMarkBoundaryFaces(*dm, 1, faceSets));
+  if (interface) {
+    PetscCheck(n % 2 == 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+               "an interface at x = 1/2 needs an even n, not %d", n);
+    PetscInt fStart, fEnd;
+    PetscCall(DMPlexGetHeightStratum(*dm, 1, &fStart, &fEnd));
+    for (PetscInt f = fStart; f < fEnd; ++f) {
+      double x;
+      bool on;
+      PetscCall(meanX(f, &x, &on));
+      if (on) PetscCall(DMLabelSetValue(faceSets, f, 2));
+    }
+  }
   PetscFunctionReturn(0);
 }
 

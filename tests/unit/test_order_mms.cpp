@@ -18,12 +18,14 @@
 // lap f = f_rr + f_r / r + f_zz), and every integral (forcing, errors) weighted by 2 pi r like
 // the kernel's. The energy norm includes the hoop strain. Expected: the plane rates (weighted
 // norms, Mercier and Raugel 1982).
+#include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/problem.hpp"
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
 
 #include "order_meshes.hpp"
+#include "order_mms_exact.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -36,120 +38,73 @@ using namespace poroseam;
 
 namespace {
 
-constexpr double kYoung = 1.0, kPoisson = 0.3, kStorage = 0.5, kMobility = 1.0;
+using test_support::Exact;
+using test_support::MmsConstants;
 
-/// prod_d sin(k_d x_d + f_d) with its first and second derivatives.
-struct Product {
-  double amplitude;
-  double k[3], f[3];
-  double value(int dim, const double *x) const
-  {
-    double v = amplitude;
-    for (int d = 0; d < dim; ++d)
-      v *= std::sin(k[d] * x[d] + f[d]);
-    return v;
-  }
-  /// d^(n1 + n2) / dx_a dx_b with n derivatives: a, b < 0 means none.
-  double derivative(int dim, const double *x, int a, int b) const
-  {
-    double v = amplitude;
-    for (int d = 0; d < dim; ++d) {
-      const int order = (a == d) + (b == d);
-      const double s = std::sin(k[d] * x[d] + f[d]), c = std::cos(k[d] * x[d] + f[d]);
-      v *= order == 0 ? s : order == 1 ? k[d] * c : -k[d] * k[d] * s;
-    }
-    return v;
-  }
-};
-
-struct Exact {
+/// What a case runs on: the mesh, the coupling and whether a cohesive interface cuts it.
+struct Case {
   int dim;
-  double alpha;      ///< Biot's coefficient: 0 decouples the displacement from the pressure
-  bool axisymmetric; ///< x = r, y = z (dim 2)
-  Product u[3], p;
-  double lambda, G;
-  Exact(int dim_, double alpha_, bool axisymmetric_ = false)
-      : dim(dim_), alpha(alpha_), axisymmetric(axisymmetric_)
-  {
-    u[0] = {0.1, {1.1 * M_PI, 0.7 * M_PI, 0.9 * M_PI}, {0.3, 0.5, 0.2}};
-    u[1] = {0.08, {0.6 * M_PI, 1.3 * M_PI, 0.8 * M_PI}, {0.7, 0.1, 0.4}};
-    u[2] = {0.06, {0.9 * M_PI, 0.8 * M_PI, 1.2 * M_PI}, {0.2, 0.6, 0.9}};
-    p = {0.1, {0.8 * M_PI, 1.2 * M_PI, 0.7 * M_PI}, {0.4, 0.2, 0.6}};
-    if (axisymmetric) {
-      // Regular on the axis: u_r = 0 there (odd in r), u_z and p even in r.
-      u[0].f[0] = 0.0;
-      u[1].f[0] = 0.5 * M_PI;
-      p.f[0] = 0.5 * M_PI;
-    }
-    G = kYoung / (2 * (1 + kPoisson));
-    lambda = kYoung * kPoisson / ((1 + kPoisson) * (1 - 2 * kPoisson));
-  }
-  /// u_r / r, the hoop strain (0 in plane strain).
-  double hoop(const double *x) const { return axisymmetric ? u[0].value(dim, x) / x[0] : 0.0; }
-  double divU(const double *x) const
-  {
-    double s = hoop(x);
-    for (int i = 0; i < dim; ++i)
-      s += u[i].derivative(dim, x, i, -1);
-    return s;
-  }
-  /// lap f of a scalar (cylindrical when axisymmetric: + f_r / r).
-  double laplacian(const Product &f, const double *x) const
-  {
-    double lap = axisymmetric ? f.derivative(dim, x, 0, -1) / x[0] : 0.0;
-    for (int j = 0; j < dim; ++j)
-      lap += f.derivative(dim, x, j, j);
-    return lap;
-  }
-  void bodyForce(const double *x, double f[3]) const
-  {
-    for (int i = 0; i < dim; ++i) {
-      double grad_div = 0.0, lap = laplacian(u[i], x);
-      for (int j = 0; j < dim; ++j)
-        grad_div += u[j].derivative(dim, x, i, j);
-      if (axisymmetric) {
-        // d/dx_i (u_r / r); (lap u)_r - u_r / r^2.
-        const double r = x[0], ur = u[0].value(dim, x);
-        grad_div += i == 0 ? u[0].derivative(dim, x, 0, -1) / r - ur / (r * r)
-                           : u[0].derivative(dim, x, i, -1) / r;
-        if (i == 0) lap -= ur / (r * r);
-      }
-      f[i] = -((lambda + G) * grad_div + G * lap) + alpha * p.derivative(dim, x, i, -1);
-    }
-  }
-  double source(const double *x) const
-  {
-    return alpha * divU(x) + kStorage * p.value(dim, x) - kMobility * laplacian(p, x);
-  }
-  /// Weight of a point's measure: 2 pi r when axisymmetric (the kernel's), else 1.
-  double ring(const double *x) const { return axisymmetric ? 2.0 * M_PI * x[0] : 1.0; }
+  bool simplex;
+  double alpha;
+  std::vector<int> sizes;
+  bool axisymmetric = false;
+  bool interface = false; ///< at x = 1/2, closed and sticking, with flow (order_mms_exact.hpp)
+  int max_order = 2;      ///< 1 where order 2 is not available yet
 };
 
-Scene mmsScene(int dim, int order, double alpha, bool axisymmetric)
+Scene mmsScene(const Case &c, int order, const MmsConstants &k)
 {
   Scene s;
-  s.dim = dim;
-  s.axisymmetric = axisymmetric;
+  s.dim = c.dim;
+  s.axisymmetric = c.axisymmetric;
   s.displacement_order = order;
   Region soil;
   soil.name = "soil";
   soil.tag = 1;
   soil.model = MaterialModel::biot;
-  soil.young = kYoung;
-  soil.poisson = kPoisson;
+  soil.young = k.young;
+  soil.poisson = k.poisson;
   soil.solid_density = 1.0;
   soil.porosity = 0.3;
-  soil.permeability = kMobility * s.fluid_viscosity;
-  soil.biot_coefficient = alpha;
-  soil.storage = kStorage;
+  soil.permeability = k.mobility * s.fluid_viscosity;
+  soil.biot_coefficient = c.alpha;
+  soil.storage = k.storage;
   s.regions = {soil};
   s.boundaries = {Boundary{"all", 1}};
-  for (int c = 0; c <= dim; ++c) {
+  for (int comp = 0; comp <= c.dim; ++comp) {
     BoundaryCondition bc;
     bc.boundary = "all";
     bc.tag = 1;
-    bc.kind = c < dim ? BcKind::displacement : BcKind::pressure;
-    bc.component = c < dim ? c : 0;
+    bc.kind = comp < c.dim ? BcKind::displacement : BcKind::pressure;
+    bc.component = comp < c.dim ? comp : 0;
+    bc.value = {0.0};
+    s.conditions.push_back(bc);
+  }
+  if (c.interface) {
+    // The same soil on side 2 (Cell Sets 2), the interface on Face Sets 2; p3 prescribed where
+    // the interface meets the boundary (the exact value, like every boundary unknown).
+    Region far = soil;
+    far.name = "far";
+    far.tag = 2;
+    s.regions.push_back(far);
+    Interface in;
+    in.name = "seam";
+    in.surfaces = {"seam"};
+    in.tags = {2};
+    in.side1 = "soil";
+    in.side1_tag = 1;
+    in.normal_stiffness = k.normal_stiffness;
+    in.tangential_stiffness = k.tangential_stiffness;
+    in.friction = k.friction;
+    in.flow = true;
+    in.aperture0 = k.aperture0;
+    in.transmissivity1 = k.transmissivity1;
+    in.transmissivity2 = k.transmissivity2;
+    s.interfaces = {in};
+    BoundaryCondition bc;
+    bc.boundary = "all";
+    bc.tag = 1;
+    bc.kind = BcKind::interface_pressure;
     bc.value = {0.0};
     s.conditions.push_back(bc);
   }
@@ -158,30 +113,60 @@ Scene mmsScene(int dim, int order, double alpha, bool axisymmetric)
 
 struct Errors {
   double u_l2 = 0, u_energy = 0, p_l2 = 0;
+  double p3_max = 0; ///< largest error of p3 at its nodes (interfaces)
   long unknowns = 0;
 };
 
+/// The side of every point of the mesh (0 or 1, -1 for points of no bulk cell: cohesive cells
+/// and their lateral edges), from the "Cell Sets" of the bulk cells whose closure holds it.
+PetscErrorCode pointSides(DM dm, std::vector<int> &side)
+{
+  PetscInt pStart, pEnd, cStart, cEnd;
+  DMLabel cellSets;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
+  side.assign(pEnd - pStart, -1);
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(dm, c, &ct));
+    if (isCohesive(ct)) continue;
+    PetscInt tag, n, *pts = nullptr;
+    PetscCall(DMLabelGetValue(cellSets, c, &tag));
+    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
+    for (PetscInt k = 0; k < n; ++k)
+      side[pts[2 * k] - pStart] = tag == 2 ? 1 : 0;
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &pts));
+  }
+  PetscFunctionReturn(0);
+}
+
 /// The exact fields at every dof of the local vector: displacement nodes sit at the mean of
 /// their point's vertices (vertex, edge midpoint, face and cell centre of the straight-sided
-/// cell), pressures at vertices.
-PetscErrorCode interpolate(DM dm, const Exact &ex, Vec local)
+/// cell), pressures at vertices, p3 on the lateral edges (at their vertex pair's place); each
+/// point takes the fields of its side.
+PetscErrorCode interpolate(DM dm, const Exact &ex, const std::vector<int> &side, Vec local)
 {
   PetscSection s, cs;
   Vec coords;
-  PetscInt pStart, pEnd, vStart, vEnd;
+  PetscInt pStart, pEnd, numFields;
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(dm, &s));
+  PetscCall(PetscSectionGetNumFields(s, &numFields));
   PetscCall(DMGetCoordinateSection(dm, &cs));
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   PetscScalar *a;
   PetscCall(VecGetArray(local, &a));
   for (PetscInt pt = pStart; pt < pEnd; ++pt) {
-    PetscInt udof = 0, pdof = 0, off;
+    PetscInt udof = 0, pdof = 0, p3dof = 0, off;
     PetscCall(PetscSectionGetFieldDof(s, pt, kDisplacementField, &udof));
-    PetscCall(PetscSectionGetFieldDof(s, pt, kPressureField, &pdof));
-    if (!udof && !pdof) continue;
+    if (numFields > kPressureField)
+      PetscCall(PetscSectionGetFieldDof(s, pt, kPressureField, &pdof));
+    if (numFields > kInterfacePressureField)
+      PetscCall(PetscSectionGetFieldDof(s, pt, kInterfacePressureField, &p3dof));
+    if (!udof && !pdof && !p3dof) continue;
     PetscScalar *xc = nullptr;
     PetscInt nc = 0;
     PetscCall(DMPlexVecGetClosure(dm, cs, coords, pt, &nc, &xc));
@@ -189,14 +174,21 @@ PetscErrorCode interpolate(DM dm, const Exact &ex, Vec local)
     for (PetscInt k = 0; k < nc; ++k)
       x[k % ex.dim] += xc[k] / (nc / ex.dim);
     PetscCall(DMPlexVecRestoreClosure(dm, cs, coords, pt, &nc, &xc));
+    const int sd = side[pt - pStart];
+    PetscCheck(sd >= 0 || !(udof || pdof), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "point %d has bulk unknowns but no bulk cell", (int)pt);
     if (udof) {
       PetscCall(PetscSectionGetFieldOffset(s, pt, kDisplacementField, &off));
       for (int i = 0; i < ex.dim; ++i)
-        a[off + i] = ex.u[i].value(ex.dim, x);
+        a[off + i] = ex.u[sd][i].value(ex.dim, x);
     }
     if (pdof) {
       PetscCall(PetscSectionGetFieldOffset(s, pt, kPressureField, &off));
-      a[off] = ex.p.value(ex.dim, x);
+      a[off] = ex.p[sd].value(ex.dim, x);
+    }
+    if (p3dof) {
+      PetscCall(PetscSectionGetFieldOffset(s, pt, kInterfacePressureField, &off));
+      a[off] = ex.p3.value(ex.dim, x);
     }
   }
   PetscCall(VecRestoreArray(local, &a));
@@ -204,18 +196,22 @@ PetscErrorCode interpolate(DM dm, const Exact &ex, Vec local)
 }
 
 /// Solves the manufactured problem on an n^dim mesh and integrates the errors.
-PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, int order, int n,
-                        Errors *err)
+PetscErrorCode solveMms(const Case &mms, int order, int n, Errors *err)
 {
+  const int dim = mms.dim;
+  const bool axisymmetric = mms.axisymmetric;
   DM dm;
-  Scene scene = mmsScene(dim, order, alpha, axisymmetric);
-  Exact ex(dim, alpha, axisymmetric);
+  Exact ex(dim, mms.alpha, axisymmetric, mms.interface);
+  Scene scene = mmsScene(mms, order, ex.k);
   Problem problem;
   PetscFunctionBeginUser;
-  PetscCall(test_support::createOrderMesh(dim, simplex, n, 0.3 / 8.0, &dm));
+  PetscCall(test_support::createOrderMesh(dim, mms.simplex, n, 0.3 / 8.0, &dm, mms.interface));
+  PetscCall(splitInterfaces(&dm, scene));
   PetscCall(markLayoutLabels(dm, scene));
   PetscCall(createSolutionSection(dm, scene));
   PetscCall(problem.setup(dm, scene));
+  std::vector<int> side;
+  PetscCall(pointSides(dm, side));
 
   Vec local, rate, flocal, blocal, X, F, dX;
   PetscCall(DMCreateLocalVector(dm, &local));
@@ -228,7 +224,7 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, 
   PetscInt size;
   PetscCall(VecGetSize(X, &size));
   err->unknowns = size;
-  PetscCall(interpolate(dm, ex, local));
+  PetscCall(interpolate(dm, ex, side, local));
 
   // The forcing b: int f . v and int g psi, integrated with the order-2 element's rule (degree
   // 4) whatever the order, through the cells' closures.
@@ -237,8 +233,9 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, 
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(DMGetCoordinateSection(dm, &cs));
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscInt cStart, cEnd;
+  PetscInt cStart, cEnd, pStart, pEnd;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   std::map<int, ReferenceElement> fine;
   auto element = [&](PetscInt c, const ReferenceElement **e) -> PetscErrorCode {
     DMPolytopeType ct;
@@ -275,6 +272,10 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, 
   std::vector<double> Fb;
   for (PetscInt c = cStart; c < cEnd; ++c) {
     const ReferenceElement *e;
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(dm, c, &ct));
+    if (isCohesive(ct)) continue; // the interface: Problem's own terms
+    const int sd = side[c - pStart];
     PetscCall(element(c, &e));
     PetscScalar *xc = nullptr;
     PetscInt nc = 0;
@@ -287,8 +288,8 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, 
       const double *N = order == 1 ? g.phi : g.node_phi;
       const double w = g.weight * ex.ring(g.x);
       double f[3];
-      ex.bodyForce(g.x, f);
-      const double source = ex.source(g.x);
+      ex.bodyForce(sd, g.x, f);
+      const double source = ex.source(sd, g.x);
       for (int a = 0; a < nn; ++a)
         for (int i = 0; i < dim; ++i)
           Fb[a * dim + i] += w * f[i] * N[a];
@@ -326,6 +327,10 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, 
   const double lambda = ex.lambda, G = ex.G;
   for (PetscInt c = cStart; c < cEnd; ++c) {
     const ReferenceElement *e;
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(dm, c, &ct));
+    if (isCohesive(ct)) continue;
+    const int sd = side[c - pStart];
     PetscCall(element(c, &e));
     PetscScalar *xc = nullptr, *x = nullptr;
     PetscInt nc = 0, nx = 0;
@@ -338,16 +343,16 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, 
       fields(*e, g, x, u, gu, &p);
       double eps[3][3] = {{0}}, tr = 0.0;
       for (int i = 0; i < dim; ++i) {
-        const double du = u[i] - ex.u[i].value(dim, g.x);
+        const double du = u[i] - ex.u[sd][i].value(dim, g.x);
         err->u_l2 += w * du * du;
         for (int j = 0; j < dim; ++j) {
-          const double gij = gu[i][j] - ex.u[i].derivative(dim, g.x, j, -1);
+          const double gij = gu[i][j] - ex.u[sd][i].derivative(dim, g.x, j, -1);
           eps[i][j] += 0.5 * gij;
           eps[j][i] += 0.5 * gij;
         }
       }
       // The hoop strain's error (u_r,h - u_r) / r; index 2 is unused in plane strain.
-      if (axisymmetric) eps[2][2] = u[0] / g.x[0] - ex.hoop(g.x);
+      if (axisymmetric) eps[2][2] = u[0] / g.x[0] - ex.hoop(sd, g.x);
       for (int i = 0; i < 3; ++i)
         tr += eps[i][i];
       double energy = lambda * tr * tr;
@@ -355,11 +360,32 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, 
         for (int j = 0; j < 3; ++j)
           energy += 2.0 * G * eps[i][j] * eps[i][j];
       err->u_energy += w * energy;
-      const double dp = p - ex.p.value(dim, g.x);
+      const double dp = p - ex.p[sd].value(dim, g.x);
       err->p_l2 += w * dp * dp;
     }
     PetscCall(DMPlexVecRestoreClosure(dm, s, local, c, &nx, &x));
     PetscCall(DMPlexVecRestoreClosure(dm, cs, coords, c, &nc, &xc));
+  }
+  // p3 at its nodes (the lateral edges), against the exact interface pressure.
+  if (mms.interface) {
+    PetscInt numFields;
+    PetscCall(PetscSectionGetNumFields(s, &numFields));
+    Vec exact;
+    PetscCall(VecDuplicate(local, &exact));
+    PetscCall(interpolate(dm, ex, side, exact));
+    const PetscScalar *xh, *xe;
+    PetscCall(VecGetArrayRead(local, &xh));
+    PetscCall(VecGetArrayRead(exact, &xe));
+    for (PetscInt pt = pStart; pt < pEnd && numFields > kInterfacePressureField; ++pt) {
+      PetscInt dof, off;
+      PetscCall(PetscSectionGetFieldDof(s, pt, kInterfacePressureField, &dof));
+      if (!dof) continue;
+      PetscCall(PetscSectionGetFieldOffset(s, pt, kInterfacePressureField, &off));
+      err->p3_max = std::max(err->p3_max, std::fabs(xh[off] - xe[off]));
+    }
+    PetscCall(VecRestoreArrayRead(exact, &xe));
+    PetscCall(VecRestoreArrayRead(local, &xh));
+    PetscCall(VecDestroy(&exact));
   }
   err->u_l2 = std::sqrt(err->u_l2);
   err->u_energy = std::sqrt(err->u_energy);
@@ -379,13 +405,10 @@ PetscErrorCode solveMms(int dim, bool simplex, double alpha, bool axisymmetric, 
   PetscFunctionReturn(0);
 }
 
-struct Case {
-  int dim;
-  bool simplex;
-  double alpha;
-  std::vector<int> sizes;
-  bool axisymmetric = false;
-};
+// Axisymmetric interfaces at order 2 are refused at set-up (checkElementOrder, layout.cpp, and
+// InterfaceAssembly::setup) until verified: the axisymmetric interface case runs order 1 only.
+// Once they are available, set this to 2 (the one line that enables the case at order 2).
+constexpr int kAxisymmetricInterfaceMaxOrder = 1;
 
 class OrderMms : public ::testing::TestWithParam<Case> {};
 
@@ -394,16 +417,19 @@ TEST_P(OrderMms, RatesMatchTheElementOrder)
   const Case c = GetParam();
   const std::string cell = std::string(c.axisymmetric ? "axisymmetric " : "") +
                            (c.dim == 2 ? (c.simplex ? "triangles" : "quadrilaterals")
-                                       : (c.simplex ? "tetrahedra" : "hexahedra"));
+                                       : (c.simplex ? "tetrahedra" : "hexahedra")) +
+                           (c.interface ? " interface" : "");
   std::vector<Errors> errors[3];
-  for (int order = 1; order <= 2; ++order)
+  for (int order = 1; order <= c.max_order; ++order)
     for (int n : c.sizes) {
       Errors e;
-      ASSERT_EQ(solveMms(c.dim, c.simplex, c.alpha, c.axisymmetric, order, n, &e), 0);
+      ASSERT_EQ(solveMms(c, order, n, &e), 0);
       errors[order].push_back(e);
       std::printf("%dD %s alpha %g order %d n %2d unknowns %6ld  |u-uh|_L2 %.3e  |u-uh|_E %.3e  "
-                  "|p-ph|_L2 %.3e\n",
+                  "|p-ph|_L2 %.3e",
                   c.dim, cell.c_str(), c.alpha, order, n, e.unknowns, e.u_l2, e.u_energy, e.p_l2);
+      if (c.interface) std::printf("  max|p3-p3h| %.3e", e.p3_max);
+      std::printf("\n");
     }
   // Rates between the last two meshes (h halves), and the expected ones with a margin of 0.2.
   auto rate = [&](int order, double Errors::*norm) {
@@ -411,12 +437,25 @@ TEST_P(OrderMms, RatesMatchTheElementOrder)
     const size_t k = e.size() - 1;
     return std::log2(e[k - 1].*norm / e[k].*norm);
   };
-  for (int order = 1; order <= 2; ++order)
-    std::printf("%dD %s alpha %g order %d rates: u L2 %.2f, u energy %.2f, p L2 %.2f\n", c.dim,
+  for (int order = 1; order <= c.max_order; ++order) {
+    std::printf("%dD %s alpha %g order %d rates: u L2 %.2f, u energy %.2f, p L2 %.2f", c.dim,
                 cell.c_str(), c.alpha, order, rate(order, &Errors::u_l2),
                 rate(order, &Errors::u_energy), rate(order, &Errors::p_l2));
+    if (c.interface) std::printf(", p3 max %.2f", rate(order, &Errors::p3_max));
+    std::printf("\n");
+  }
+  // Every error decreases with h, on every mesh of the sequence.
+  for (int order = 1; order <= c.max_order; ++order)
+    for (size_t k = 1; k < c.sizes.size(); ++k) {
+      EXPECT_LT(errors[order][k].u_l2, errors[order][k - 1].u_l2);
+      EXPECT_LT(errors[order][k].u_energy, errors[order][k - 1].u_energy);
+      EXPECT_LT(errors[order][k].p_l2, errors[order][k - 1].p_l2);
+      if (c.interface) EXPECT_LT(errors[order][k].p3_max, errors[order][k - 1].p3_max);
+    }
   EXPECT_GE(rate(1, &Errors::u_l2), 2.0 - 0.2);
   EXPECT_GE(rate(1, &Errors::u_energy), 1.0 - 0.2);
+  EXPECT_GE(rate(1, &Errors::p_l2), 2.0 - 0.2);
+  if (c.max_order < 2) return;
   // P2 displacement in L2: h^3 when the pressure does not act on it (alpha = 0); coupled, the
   // P1 pressure's H1 error (h) enters the duality argument and the rate is h^2 (measured:
   // 2.98 decoupled, 2.07 coupled on triangles; docs/elements.md).
@@ -436,13 +475,23 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{2, false, 0.0, {8, 16, 32}}, Case{2, true, 0.0, {8, 16, 32}},
                       Case{3, false, 0.8, {2, 4, 8}}, Case{3, true, 0.8, {2, 4, 8}},
                       Case{2, true, 0.0, {8, 16, 32}, true}, Case{2, false, 0.0, {8, 16, 32}, true},
-                      Case{2, true, 0.8, {8, 16, 32}, true}),
+                      Case{2, true, 0.8, {8, 16, 32}, true},
+                      // A cohesive interface at x = 1/2, closed, sticking, with flow.
+                      Case{2, false, 0.8, {8, 16, 32}, false, true},
+                      Case{2, true, 0.8, {8, 16, 32}, false, true},
+                      Case{2, true, 0.0, {8, 16, 32}, false, true},
+                      Case{3, false, 0.8, {2, 4, 8}, false, true},
+                      Case{3, true, 0.8, {2, 4, 8}, false, true},
+                      Case{2, true, 0.8, {8, 16, 32}, true, true, kAxisymmetricInterfaceMaxOrder},
+                      Case{2, false, 0.0, {8, 16, 32}, true, true,
+                           kAxisymmetricInterfaceMaxOrder}),
     [](const ::testing::TestParamInfo<Case> &info) {
       return std::string(info.param.axisymmetric ? "axisymmetric_"
                          : info.param.dim == 2   ? "plane_strain_"
                                                  : "solid_") +
              (info.param.simplex ? "simplices" : "tensor_cells") +
-             (info.param.alpha == 0.0 ? "_uncoupled" : "_biot");
+             (info.param.alpha == 0.0 ? "_uncoupled" : "_biot") +
+             (info.param.interface ? "_interface" : "");
     });
 
 } // namespace
