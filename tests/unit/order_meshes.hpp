@@ -4,11 +4,16 @@
 // (tensor cells) affine. "Cell Sets" = 1 on every cell, "Face Sets" = 1 on every boundary face.
 // With an interface (n even): "Cell Sets" = 2 beyond the plane x = 1/2, which the map keeps
 // straight, and "Face Sets" = 2 on the faces in that plane.
+// With a jitter j > 0 every interior vertex first moves by a pseudo-random amount (seeded,
+// so the same mesh every run) of up to j h in each component (vertices on the interface only
+// along it), so that cells stay non-affine and irregular at every h, not only on the coarse
+// meshes; every simplex keeps its orientation (checked).
 // Built with DMPlexCreateFromCellListPetsc (PETSc 3.18 has no simplex generator here).
 #pragma once
 
 #include <cmath>
 #include <petscdmplex.h>
+#include <random>
 #include <vector>
 
 namespace poroseam::test_support {
@@ -25,30 +30,41 @@ inline void distort(int dim, double amplitude, double *x)
 }
 
 inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double amplitude, DM *dm,
-                                      bool interface = false)
+                                      bool interface = false, double jitter = 0.0)
 {
   PetscFunctionBeginUser;
   const int nv1 = n + 1;
   const int nverts = dim == 2 ? nv1 * nv1 : nv1 * nv1 * nv1;
-  std::vector<double> coords(nverts * dim);
+  std::vector<double> coords(nverts * dim), regular(nverts * dim);
   auto vid = [&](int i, int j, int k) { return i + nv1 * (j + nv1 * k); };
+  std::mt19937 rng(20261127);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (int k = 0; k < (dim == 3 ? nv1 : 1); ++k)
     for (int j = 0; j < nv1; ++j)
       for (int i = 0; i < nv1; ++i) {
         double *x = &coords[vid(i, j, k) * dim];
-        x[0] = (double)i / n, x[1] = (double)j / n;
-        if (dim == 3) x[2] = (double)k / n;
+        const int index[3] = {i, j, k};
+        bool interior = true;
+        for (int d = 0; d < dim; ++d) {
+          x[d] = (double)index[d] / n;
+          regular[vid(i, j, k) * dim + d] = x[d];
+          interior = interior && index[d] > 0 && index[d] < n;
+        }
+        for (int d = 0; d < dim && jitter > 0.0; ++d) {
+          const double move = jitter * unit(rng) / n; // drawn for every vertex: a fixed sequence
+          if (interior && !(interface && d == 0 && 2 * i == n)) x[d] += move;
+        }
         distort(dim, amplitude, x);
       }
   std::vector<PetscInt> cells;
   int corners = 0;
-  auto volumeSign = [&](const std::vector<PetscInt> &c) {
+  auto volumeSign = [&](const std::vector<PetscInt> &c, const std::vector<double> &xs) {
     // Sign of the simplex volume (det of edge vectors).
-    const double *a = &coords[c[0] * dim];
+    const double *a = &xs[c[0] * dim];
     double e[3][3] = {{0}};
     for (int r = 1; r <= dim; ++r)
       for (int d = 0; d < dim; ++d)
-        e[r - 1][d] = coords[c[r] * dim + d] - a[d];
+        e[r - 1][d] = xs[c[r] * dim + d] - a[d];
     if (dim == 2) return e[0][0] * e[1][1] - e[0][1] * e[1][0];
     return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
            e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
@@ -56,8 +72,10 @@ inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double ampli
   };
   // The orientation of PETSc's reference simplex: counter-clockwise triangle, and a
   // tetrahedron whose edge vectors from vertex 0 have a negative determinant.
+  bool inverted = false;
   auto addSimplex = [&](std::vector<PetscInt> c) {
-    if (volumeSign(c) * (dim == 2 ? 1.0 : -1.0) < 0) std::swap(c[0], c[1]);
+    if (volumeSign(c, regular) * (dim == 2 ? 1.0 : -1.0) < 0) std::swap(c[0], c[1]);
+    inverted = inverted || volumeSign(c, coords) * volumeSign(c, regular) <= 0.0;
     cells.insert(cells.end(), c.begin(), c.end());
   };
   for (int k = 0; k < (dim == 3 ? n : 1); ++k)
@@ -104,6 +122,9 @@ inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double ampli
           }
         }
       }
+  PetscCheck(!inverted, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "createOrderMesh: the distortion (amplitude %g, jitter %g) inverts a simplex",
+             amplitude, jitter);
   const PetscInt ncells = (PetscInt)(cells.size() / corners);
   PetscCall(DMPlexCreateFromCellListPetsc(PETSC_COMM_SELF, dim, ncells, nverts, corners, PETSC_TRUE,
                                           cells.data(), dim, coords.data(), dm));

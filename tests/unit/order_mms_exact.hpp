@@ -18,6 +18,9 @@
 // slope c that keeps the traction continuous with the pressure jump Q0:
 //   c_0 = (alpha Q0 - lambda (sum_j dg_j/dx_j + g_0 / x0 [axisymmetric hoop])) / (lambda + 2G),
 //   c_j = -dg_0/dx_j  (j tangential).
+// Without flow (an impervious interface, no p3: mechanics only) both sides take the pressure
+// P - sin(x - x0) dP/dx(x0), whose flux through the interface vanishes, the gap g_0 = t_0 / K_N,
+// and no pressure jump (plane strain and 3D: that pressure is not regular on the axis).
 // Side 1's u_x gets a compression -A sin(x) (odd in r: regular on the axis) so that the
 // interface stays closed everywhere (p'_N between about 1 and 4 here).
 #pragma once
@@ -120,12 +123,14 @@ struct Exact {
   double alpha;      ///< Biot's coefficient: 0 decouples the displacement from the pressure
   bool axisymmetric; ///< x = r, y = z (dim 2)
   bool interface;    ///< side 2 (x > x0) differs by the jump fields
+  bool flow;         ///< the interface has p3 and the three-node flow
   MmsConstants k;
   Field u[2][3], p[2]; ///< per side (side 1: index 0)
   Field p3;            ///< interface pressure (along the interface, constant in x)
   double lambda, G;
-  Exact(int dim_, double alpha_, bool axisymmetric_ = false, bool interface_ = false)
-      : dim(dim_), alpha(alpha_), axisymmetric(axisymmetric_), interface(interface_)
+  Exact(int dim_, double alpha_, bool axisymmetric_ = false, bool interface_ = false,
+        bool flow_ = false)
+      : dim(dim_), alpha(alpha_), axisymmetric(axisymmetric_), interface(interface_), flow(flow_)
   {
     Product u0 = {0.1, {1.1 * M_PI, 0.7 * M_PI, 0.9 * M_PI}, {0.3, 0.5, 0.2}};
     Product u1 = {0.08, {0.6 * M_PI, 1.3 * M_PI, 0.8 * M_PI}, {0.7, 0.1, 0.4}};
@@ -155,6 +160,7 @@ struct Exact {
   {
     const double x0 = k.x0, M = lambda + 2 * G;
     const Field *U = u[0];
+    if (!flow) p[0] = p[0] + (p[0].d(0).on(0, x0) * -1.0).times_sine(0, x0);
     const Field P = p[0];
     // Side 1's total traction on the plane, t = sigma e1.
     Field t[3];
@@ -165,19 +171,22 @@ struct Exact {
     t[0] = volumetric.on(0, x0) - P.on(0, x0) * alpha;
     for (int j = 1; j < dim; ++j)
       t[j] = (U[0].d(j) + U[j].d(0)).on(0, x0) * G;
-    // Flow: p3, the transversal fluxes, and side 2's pressure.
-    p3 = P.on(0, x0) + P.d(0).on(0, x0) * (k.mobility / k.transmissivity1);
-    const Field f1 = P.d(0).on(0, x0) * -k.mobility;
-    Field lap_p3;
-    for (int j = 1; j < dim; ++j)
-      lap_p3 = lap_p3 + p3.d(j).d(j);
-    const double C = std::pow(k.aperture0, 3) / (12.0 * k.viscosity);
-    const Field f2 = f1 + lap_p3 * C;
-    const Field Q0 = p3 - f2 * (1.0 / k.transmissivity2) - P.on(0, x0);
-    const Field Q1 = lap_p3 * (-C / k.mobility);
-    p[1] = P + Q0 + Q1.times_sine(0, x0);
+    Field g[3], c[3], Q0;
+    if (flow) {
+      // Flow: p3, the transversal fluxes, and side 2's pressure.
+      p3 = P.on(0, x0) + P.d(0).on(0, x0) * (k.mobility / k.transmissivity1);
+      const Field f1 = P.d(0).on(0, x0) * -k.mobility;
+      Field lap_p3;
+      for (int j = 1; j < dim; ++j)
+        lap_p3 = lap_p3 + p3.d(j).d(j);
+      const double C = std::pow(k.aperture0, 3) / (12.0 * k.viscosity);
+      const Field f2 = f1 + lap_p3 * C;
+      Q0 = p3 - f2 * (1.0 / k.transmissivity2) - P.on(0, x0);
+      const Field Q1 = lap_p3 * (-C / k.mobility);
+      p[1] = P + Q0 + Q1.times_sine(0, x0);
+    } else
+      p[1] = P;
     // The gap, and the slope of the jump that keeps the traction continuous.
-    Field g[3], c[3];
     g[0] = (t[0] + p3) * (1.0 / k.normal_stiffness);
     for (int j = 1; j < dim; ++j)
       g[j] = t[j] * (1.0 / k.tangential_stiffness);

@@ -18,6 +18,7 @@
 // lap f = f_rr + f_r / r + f_zz), and every integral (forcing, errors) weighted by 2 pi r like
 // the kernel's. The energy norm includes the hoop strain. Expected: the plane rates (weighted
 // norms, Mercier and Raugel 1982).
+#include "poroseam/interface_assembly.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/problem.hpp"
@@ -41,6 +42,10 @@ namespace {
 using test_support::Exact;
 using test_support::MmsConstants;
 
+/// A cohesive interface at x = 1/2, closed and sticking (order_mms_exact.hpp): none, mechanics
+/// only (impervious, no p3), or with the three-node flow.
+enum class Seam { none, mechanical, flow };
+
 /// What a case runs on: the mesh, the coupling and whether a cohesive interface cuts it.
 struct Case {
   int dim;
@@ -48,8 +53,11 @@ struct Case {
   double alpha;
   std::vector<int> sizes;
   bool axisymmetric = false;
-  bool interface = false; ///< at x = 1/2, closed and sticking, with flow (order_mms_exact.hpp)
-  int max_order = 2;      ///< 1 where order 2 is not available yet
+  Seam seam = Seam::none;
+  double jitter = 0.0; ///< pseudo-random moves of the vertices, fraction of h (order_meshes.hpp)
+  int max_order = 2;   ///< 1 where order 2 is not available yet
+  bool interface() const { return seam != Seam::none; }
+  bool flow() const { return seam == Seam::flow; }
 };
 
 Scene mmsScene(const Case &c, int order, const MmsConstants &k)
@@ -80,7 +88,7 @@ Scene mmsScene(const Case &c, int order, const MmsConstants &k)
     bc.value = {0.0};
     s.conditions.push_back(bc);
   }
-  if (c.interface) {
+  if (c.interface()) {
     // The same soil on side 2 (Cell Sets 2), the interface on Face Sets 2; p3 prescribed where
     // the interface meets the boundary (the exact value, like every boundary unknown).
     Region far = soil;
@@ -96,11 +104,13 @@ Scene mmsScene(const Case &c, int order, const MmsConstants &k)
     in.normal_stiffness = k.normal_stiffness;
     in.tangential_stiffness = k.tangential_stiffness;
     in.friction = k.friction;
-    in.flow = true;
+    in.flow = c.flow();
     in.aperture0 = k.aperture0;
     in.transmissivity1 = k.transmissivity1;
     in.transmissivity2 = k.transmissivity2;
     s.interfaces = {in};
+  }
+  if (c.flow()) {
     BoundaryCondition bc;
     bc.boundary = "all";
     bc.tag = 1;
@@ -113,7 +123,8 @@ Scene mmsScene(const Case &c, int order, const MmsConstants &k)
 
 struct Errors {
   double u_l2 = 0, u_energy = 0, p_l2 = 0;
-  double p3_max = 0; ///< largest error of p3 at its nodes (interfaces)
+  double p3_l2 = 0, gap_l2 = 0; ///< on the interface: p3 and the jump u2 - u1
+  int sticking = 0, points = 0;  ///< interface points in the closed sticking state, of all
   long unknowns = 0;
 };
 
@@ -201,11 +212,12 @@ PetscErrorCode solveMms(const Case &mms, int order, int n, Errors *err)
   const int dim = mms.dim;
   const bool axisymmetric = mms.axisymmetric;
   DM dm;
-  Exact ex(dim, mms.alpha, axisymmetric, mms.interface);
+  Exact ex(dim, mms.alpha, axisymmetric, mms.interface(), mms.flow());
   Scene scene = mmsScene(mms, order, ex.k);
   Problem problem;
   PetscFunctionBeginUser;
-  PetscCall(test_support::createOrderMesh(dim, mms.simplex, n, 0.3 / 8.0, &dm, mms.interface));
+  PetscCall(test_support::createOrderMesh(dim, mms.simplex, n, 0.3 / 8.0, &dm, mms.interface(),
+                                          mms.jitter));
   PetscCall(splitInterfaces(&dm, scene));
   PetscCall(markLayoutLabels(dm, scene));
   PetscCall(createSolutionSection(dm, scene));
@@ -366,26 +378,28 @@ PetscErrorCode solveMms(const Case &mms, int order, int n, Errors *err)
     PetscCall(DMPlexVecRestoreClosure(dm, s, local, c, &nx, &x));
     PetscCall(DMPlexVecRestoreClosure(dm, cs, coords, c, &nc, &xc));
   }
-  // p3 at its nodes (the lateral edges), against the exact interface pressure.
-  if (mms.interface) {
-    PetscInt numFields;
-    PetscCall(PetscSectionGetNumFields(s, &numFields));
-    Vec exact;
-    PetscCall(VecDuplicate(local, &exact));
-    PetscCall(interpolate(dm, ex, side, exact));
-    const PetscScalar *xh, *xe;
-    PetscCall(VecGetArrayRead(local, &xh));
-    PetscCall(VecGetArrayRead(exact, &xe));
-    for (PetscInt pt = pStart; pt < pEnd && numFields > kInterfacePressureField; ++pt) {
-      PetscInt dof, off;
-      PetscCall(PetscSectionGetFieldDof(s, pt, kInterfacePressureField, &dof));
-      if (!dof) continue;
-      PetscCall(PetscSectionGetFieldOffset(s, pt, kInterfacePressureField, &off));
-      err->p3_max = std::max(err->p3_max, std::fabs(xh[off] - xe[off]));
-    }
-    PetscCall(VecRestoreArrayRead(exact, &xe));
-    PetscCall(VecRestoreArrayRead(local, &xh));
-    PetscCall(VecDestroy(&exact));
+  // On the interface, at its integration points (Problem's own evaluation, weighted like its
+  // integrals: 2 pi r in axisymmetry): the gap and p3 against the exact jump and p3, and the
+  // state, which must be the closed sticking one everywhere.
+  if (mms.interface()) {
+    PetscCall(VecCopy(local, rate));
+    PetscCall(problem.interfaces().visit(
+        local, InterfaceRates{rate, 0.0}, [&](int, int, PetscInt, const InterfacePointState &st) {
+          ++err->points;
+          err->sticking += st.response.state == physics::ContactState::stick;
+          const double local_gap[3] = {st.gap_normal, st.gap_tangential[0], st.gap_tangential[1]};
+          for (int i = 0; i < dim; ++i) {
+            double gap = 0.0;
+            for (int k = 0; k < dim; ++k)
+              gap += local_gap[k] * st.frame[k][i];
+            const double dg = gap - (ex.u[1][i].value(dim, st.x) - ex.u[0][i].value(dim, st.x));
+            err->gap_l2 += st.weight * dg * dg;
+          }
+          const double dp3 = st.interface_pressure - ex.p3.value(dim, st.x);
+          if (mms.flow()) err->p3_l2 += st.weight * dp3 * dp3;
+        }));
+    err->gap_l2 = std::sqrt(err->gap_l2);
+    err->p3_l2 = std::sqrt(err->p3_l2);
   }
   err->u_l2 = std::sqrt(err->u_l2);
   err->u_energy = std::sqrt(err->u_energy);
@@ -418,17 +432,22 @@ TEST_P(OrderMms, RatesMatchTheElementOrder)
   const std::string cell = std::string(c.axisymmetric ? "axisymmetric " : "") +
                            (c.dim == 2 ? (c.simplex ? "triangles" : "quadrilaterals")
                                        : (c.simplex ? "tetrahedra" : "hexahedra")) +
-                           (c.interface ? " interface" : "");
+                           (c.flow() ? " interface, flow" : c.interface() ? " interface" : "");
   std::vector<Errors> errors[3];
   for (int order = 1; order <= c.max_order; ++order)
     for (int n : c.sizes) {
       Errors e;
       ASSERT_EQ(solveMms(c, order, n, &e), 0);
       errors[order].push_back(e);
+      // The manufactured state is the closed, sticking one; so must the discrete one be.
+      EXPECT_EQ(e.sticking, e.points);
+      if (c.interface()) EXPECT_GT(e.points, 0);
       std::printf("%dD %s alpha %g order %d n %2d unknowns %6ld  |u-uh|_L2 %.3e  |u-uh|_E %.3e  "
                   "|p-ph|_L2 %.3e",
                   c.dim, cell.c_str(), c.alpha, order, n, e.unknowns, e.u_l2, e.u_energy, e.p_l2);
-      if (c.interface) std::printf("  max|p3-p3h| %.3e", e.p3_max);
+      if (c.interface())
+        std::printf("  |g-gh|_L2 %.3e  |p3-p3h|_L2 %.3e  stick %d/%d", e.gap_l2, e.p3_l2,
+                    e.sticking, e.points);
       std::printf("\n");
     }
   // Rates between the last two meshes (h halves), and the expected ones with a margin of 0.2.
@@ -441,7 +460,8 @@ TEST_P(OrderMms, RatesMatchTheElementOrder)
     std::printf("%dD %s alpha %g order %d rates: u L2 %.2f, u energy %.2f, p L2 %.2f", c.dim,
                 cell.c_str(), c.alpha, order, rate(order, &Errors::u_l2),
                 rate(order, &Errors::u_energy), rate(order, &Errors::p_l2));
-    if (c.interface) std::printf(", p3 max %.2f", rate(order, &Errors::p3_max));
+    if (c.interface()) std::printf(", gap L2 %.2f", rate(order, &Errors::gap_l2));
+    if (c.flow()) std::printf(", p3 L2 %.2f", rate(order, &Errors::p3_l2));
     std::printf("\n");
   }
   // Every error decreases with h, on every mesh of the sequence.
@@ -450,16 +470,22 @@ TEST_P(OrderMms, RatesMatchTheElementOrder)
       EXPECT_LT(errors[order][k].u_l2, errors[order][k - 1].u_l2);
       EXPECT_LT(errors[order][k].u_energy, errors[order][k - 1].u_energy);
       EXPECT_LT(errors[order][k].p_l2, errors[order][k - 1].p_l2);
-      if (c.interface) EXPECT_LT(errors[order][k].p3_max, errors[order][k - 1].p3_max);
+      if (c.interface()) EXPECT_LT(errors[order][k].gap_l2, errors[order][k - 1].gap_l2);
+      if (c.flow()) EXPECT_LT(errors[order][k].p3_l2, errors[order][k - 1].p3_l2);
     }
   EXPECT_GE(rate(1, &Errors::u_l2), 2.0 - 0.2);
   EXPECT_GE(rate(1, &Errors::u_energy), 1.0 - 0.2);
   EXPECT_GE(rate(1, &Errors::p_l2), 2.0 - 0.2);
+  // p3 (linear at both orders) on the interface, in L2 along it.
+  for (int order = 1; order <= c.max_order && c.flow(); ++order)
+    EXPECT_GE(rate(order, &Errors::p3_l2), 2.0 - 0.2);
   if (c.max_order < 2) return;
   // P2 displacement in L2: h^3 when the pressure does not act on it (alpha = 0); coupled, the
   // P1 pressure's H1 error (h) enters the duality argument and the rate is h^2 (measured:
-  // 2.98 decoupled, 2.07 coupled on triangles; docs/elements.md).
-  EXPECT_GE(rate(2, &Errors::u_l2), (c.alpha == 0.0 ? 3.0 : 2.0) - 0.2);
+  // 2.98 decoupled, 2.07 coupled on triangles; docs/elements.md). An interface with flow
+  // couples them whatever alpha: p3 (P1) pushes both faces.
+  const bool coupled = c.alpha != 0.0 || c.flow();
+  EXPECT_GE(rate(2, &Errors::u_l2), (coupled ? 2.0 : 3.0) - 0.2);
   EXPECT_GE(rate(2, &Errors::u_energy), 2.0 - 0.2);
   EXPECT_GE(rate(2, &Errors::p_l2), 2.0 - 0.2);
   // Order 2 is the more accurate at equal mesh, on every mesh and norm of the displacement.
@@ -476,14 +502,17 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{3, false, 0.8, {2, 4, 8}}, Case{3, true, 0.8, {2, 4, 8}},
                       Case{2, true, 0.0, {8, 16, 32}, true}, Case{2, false, 0.0, {8, 16, 32}, true},
                       Case{2, true, 0.8, {8, 16, 32}, true},
-                      // A cohesive interface at x = 1/2, closed, sticking, with flow.
-                      Case{2, false, 0.8, {8, 16, 32}, false, true},
-                      Case{2, true, 0.8, {8, 16, 32}, false, true},
-                      Case{2, true, 0.0, {8, 16, 32}, false, true},
-                      Case{3, false, 0.8, {2, 4, 8}, false, true},
-                      Case{3, true, 0.8, {2, 4, 8}, false, true},
-                      Case{2, true, 0.8, {8, 16, 32}, true, true, kAxisymmetricInterfaceMaxOrder},
-                      Case{2, false, 0.0, {8, 16, 32}, true, true,
+                      // A cohesive interface at x = 1/2, closed and sticking, on meshes also
+                      // jittered by up to 0.15 h (along the interface on it).
+                      Case{2, false, 0.8, {8, 16, 32}, false, Seam::flow, 0.15},
+                      Case{2, true, 0.8, {8, 16, 32}, false, Seam::flow, 0.15},
+                      Case{2, true, 0.0, {8, 16, 32}, false, Seam::mechanical, 0.15},
+                      Case{2, false, 0.0, {8, 16, 32}, false, Seam::mechanical, 0.15},
+                      Case{3, false, 0.8, {2, 4, 8}, false, Seam::flow, 0.15},
+                      Case{3, true, 0.8, {2, 4, 8}, false, Seam::flow, 0.15},
+                      Case{2, true, 0.8, {8, 16, 32}, true, Seam::flow, 0.15,
+                           kAxisymmetricInterfaceMaxOrder},
+                      Case{2, false, 0.8, {8, 16, 32}, true, Seam::flow, 0.15,
                            kAxisymmetricInterfaceMaxOrder}),
     [](const ::testing::TestParamInfo<Case> &info) {
       return std::string(info.param.axisymmetric ? "axisymmetric_"
@@ -491,7 +520,9 @@ INSTANTIATE_TEST_SUITE_P(
                                                  : "solid_") +
              (info.param.simplex ? "simplices" : "tensor_cells") +
              (info.param.alpha == 0.0 ? "_uncoupled" : "_biot") +
-             (info.param.interface ? "_interface" : "");
+             (info.param.flow()        ? "_interface_flow"
+              : info.param.interface() ? "_interface"
+                                       : "");
     });
 
 } // namespace
