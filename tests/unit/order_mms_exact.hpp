@@ -109,13 +109,13 @@ struct Field {
 /// Material and interface constants of the manufactured problem.
 struct MmsConstants {
   double young = 1.0, poisson = 0.3, storage = 0.5, mobility = 1.0; ///< kappa = k / mu_w
-  double viscosity = 1e-3;                                         ///< mu_w (the scene's default)
+  double viscosity = 1e-3;                                          ///< mu_w (the scene's default)
   // The interface: penalties K h / E from 0.3 to 5 on these meshes; friction that never slips.
   double normal_stiffness = 10.0, tangential_stiffness = 5.0, friction = 1e3;
-  double aperture0 = 0.1;                        ///< D0: C = D0^3 / (12 mu_w) = 0.083
+  double aperture0 = 0.1; ///< D0: C = D0^3 / (12 mu_w) = 0.083
   double transmissivity1 = 1.0, transmissivity2 = 0.5;
-  double x0 = 0.5;                               ///< the interface plane x = x0
-  double compression = 2.0;                      ///< A of side 1's -A sin(x) along x
+  double x0 = 0.5;          ///< the interface plane x = x0
+  double compression = 2.0; ///< A of side 1's -A sin(x) along x
 };
 
 struct Exact {
