@@ -57,6 +57,7 @@ struct Case {
   Seam seam = Seam::none;
   double jitter = 0.0; ///< pseudo-random moves of the vertices, fraction of h (order_meshes.hpp)
   int max_order = 2;   ///< 1 where order 2 is not available yet
+  bool nodal = false;  ///< the interface's nodal rule (-interface_<i>_integration nodal)
   bool interface() const { return seam != Seam::none; }
   bool flow() const { return seam == Seam::flow; }
 };
@@ -105,6 +106,7 @@ inline Scene mmsScene(const Case &c, int order, const MmsConstants &k)
     in.normal_stiffness = k.normal_stiffness;
     in.tangential_stiffness = k.tangential_stiffness;
     in.friction = k.friction;
+    in.nodal_integration = c.nodal;
     in.flow = c.flow();
     in.aperture0 = k.aperture0;
     in.transmissivity1 = k.transmissivity1;
@@ -429,7 +431,8 @@ inline std::string caseName(const Case &c)
          (c.simplex ? "simplices" : "tensor_cells") + (c.alpha == 0.0 ? "_uncoupled" : "_biot") +
          (c.flow()        ? "_interface_flow"
           : c.interface() ? "_interface"
-                          : "");
+                          : "") +
+         (c.nodal ? "_nodal" : "");
 }
 
 /// Runs a case at each order on each mesh, prints the errors and the rates between the two
@@ -441,7 +444,8 @@ inline void checkRates(const Case &c)
                                        : (c.simplex ? "tetrahedra" : "hexahedra")) +
                            (c.flow()        ? " interface, flow"
                             : c.interface() ? " interface"
-                                            : "");
+                                            : "") +
+                           (c.nodal ? ", nodal rule" : "");
   std::vector<Errors> errors[3];
   for (int order = 1; order <= c.max_order; ++order)
     for (int n : c.sizes) {

@@ -42,8 +42,18 @@ INSTANTIATE_TEST_SUITE_P(
         Case{3, false, 0.8, {2, 4, 8}, false, Seam::flow, kJitter},
         Case{3, true, 0.8, {2, 4, 8}, false, Seam::flow, kJitter},
         Case{2, true, 0.8, {8, 16, 32}, true, Seam::flow, kJitter, kAxisymmetricInterfaceMaxOrder},
-        Case{
-            2, false, 0.8, {8, 16, 32}, true, Seam::flow, kJitter, kAxisymmetricInterfaceMaxOrder}),
+        Case{2, false, 0.8, {8, 16, 32}, true, Seam::flow, kJitter, kAxisymmetricInterfaceMaxOrder},
+        // The nodal rule (trapezoid / Simpson on the faces' nodes; lumped ring weights).
+        Case{2, false, 0.8, {8, 16, 32}, false, Seam::flow, kJitter, 2, true},
+        Case{2,
+             false,
+             0.8,
+             {8, 16, 32},
+             true,
+             Seam::flow,
+             kJitter,
+             kAxisymmetricInterfaceMaxOrder,
+             true}),
     [](const ::testing::TestParamInfo<Case> &info) { return caseName(info.param); });
 
 } // namespace
