@@ -78,9 +78,32 @@ inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double ampli
     inverted = inverted || volumeSign(c, coords) * volumeSign(c, regular) <= 0.0;
     cells.insert(cells.end(), c.begin(), c.end());
   };
+  // A tensor cell is valid (its multilinear map one-to-one) when the signed edge vectors at
+  // every corner keep the reference orientation: checked at the 4 or 8 corners.
+  auto tensorCellValid = [&](int i, int j, int k) {
+    for (int corner = 0; corner < (1 << dim); ++corner) {
+      const int at[3] = {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1};
+      const double *x = &coords[vid(i + at[0], j + at[1], k + at[2]) * dim];
+      double e[3][3] = {{0}};
+      for (int r = 0; r < dim; ++r) {
+        int to[3] = {at[0], at[1], at[2]};
+        to[r] = 1 - to[r];
+        const double *y = &coords[vid(i + to[0], j + to[1], k + to[2]) * dim];
+        for (int d = 0; d < dim; ++d)
+          e[r][d] = (at[r] ? -1.0 : 1.0) * (y[d] - x[d]);
+      }
+      const double det = dim == 2 ? e[0][0] * e[1][1] - e[0][1] * e[1][0]
+                                  : e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                                        e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                                        e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+      if (det <= 0.0) return false;
+    }
+    return true;
+  };
   for (int k = 0; k < (dim == 3 ? n : 1); ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
+        if (!simplex) inverted = inverted || !tensorCellValid(i, j, k);
         if (dim == 2) {
           const PetscInt v00 = vid(i, j, 0), v10 = vid(i + 1, j, 0), v11 = vid(i + 1, j + 1, 0),
                          v01 = vid(i, j + 1, 0);
@@ -123,8 +146,8 @@ inline PetscErrorCode createOrderMesh(int dim, bool simplex, int n, double ampli
         }
       }
   PetscCheck(!inverted, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "createOrderMesh: the distortion (amplitude %g, jitter %g) inverts a simplex",
-             amplitude, jitter);
+             "createOrderMesh: the distortion (amplitude %g, jitter %g) inverts a cell", amplitude,
+             jitter);
   const PetscInt ncells = (PetscInt)(cells.size() / corners);
   PetscCall(DMPlexCreateFromCellListPetsc(PETSC_COMM_SELF, dim, ncells, nverts, corners, PETSC_TRUE,
                                           cells.data(), dim, coords.data(), dm));
