@@ -126,8 +126,9 @@ inline Scene mmsScene(const Case &c, int order, const MmsConstants &k)
 
 struct Errors {
   double u_l2 = 0, u_energy = 0, p_l2 = 0;
-  double p3_l2 = 0, gap_l2 = 0; ///< on the interface: p3 and the jump u2 - u1
-  int sticking = 0, points = 0; ///< interface points in the closed sticking state, of all
+  double p3_l2 = 0, gap_l2 = 0;      ///< on the interface: p3 and the jump u2 - u1
+  int sticking = 0, points = 0;      ///< interface points in the closed sticking state, of all
+  double pn_min = 1e300, pn_max = 0; ///< range of p'_N over them
   long unknowns = 0;
 };
 
@@ -390,6 +391,8 @@ inline PetscErrorCode solveMms(const Case &mms, int order, int n, Errors *err)
         local, InterfaceRates{rate, 0.0}, [&](int, int, PetscInt, const InterfacePointState &st) {
           ++err->points;
           err->sticking += st.response.state == physics::ContactState::stick;
+          err->pn_min = std::min(err->pn_min, st.response.contact_pressure_effective);
+          err->pn_max = std::max(err->pn_max, st.response.contact_pressure_effective);
           const double local_gap[3] = {st.gap_normal, st.gap_tangential[0], st.gap_tangential[1]};
           for (int i = 0; i < dim; ++i) {
             double gap = 0.0;
@@ -459,8 +462,8 @@ inline void checkRates(const Case &c)
                   "|p-ph|_L2 %.3e",
                   c.dim, cell.c_str(), c.alpha, order, n, e.unknowns, e.u_l2, e.u_energy, e.p_l2);
       if (c.interface())
-        std::printf("  |g-gh|_L2 %.3e  |p3-p3h|_L2 %.3e  stick %d/%d", e.gap_l2, e.p3_l2,
-                    e.sticking, e.points);
+        std::printf("  |g-gh|_L2 %.3e  |p3-p3h|_L2 %.3e  stick %d/%d, p'_N %.2f to %.2f", e.gap_l2,
+                    e.p3_l2, e.sticking, e.points, e.pn_min, e.pn_max);
       std::printf("\n");
     }
   // Rates between the last two meshes (h halves), and the expected ones with a margin of 0.2.
