@@ -2,10 +2,10 @@
 // test_order_mms_interface.cpp with a cohesive interface): the solve on one mesh, its errors in
 // L2 and energy norms, and the check of the observed rates against the element orders.
 //
-// Exact fields (order_mms_exact.hpp): u_i = A_i prod_d sin(k_id x_d + f_id), p = P prod_d sin(k_d
-// x_d + f_d), both growing like e^t, so u_t = u and p_t = p at t = 0. The body force and the source
-// that make them a solution are computed in the test (a test-only forcing, assembled beside
-// Problem's residual):
+// Exact fields (order_mms_exact.hpp): u_i = A_i prod_d sin(k_id x_d + f_id),
+// p = P prod_d sin(k_d x_d + f_d), both growing like e^t, so u_t = u and p_t = p at t = 0. The
+// body force and the source that make them a solution are computed in the test (a test-only
+// forcing, assembled beside Problem's residual):
 //   f = -div(sigma'(u) - alpha p I) = -((lambda + G) grad div u + G lap u) + alpha grad p
 //   g = alpha div u_t + p_t / M - kappa lap p
 // Problem assembles R(x, x_t) (the real code: kernel, closures, section, constraints); the
