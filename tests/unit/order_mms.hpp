@@ -32,6 +32,7 @@
 #include "order_meshes.hpp"
 #include "order_mms_exact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
@@ -442,6 +443,8 @@ inline std::string caseName(const Case &c)
 /// finest meshes, and checks them against the element orders.
 inline void checkRates(const Case &c)
 {
+  // The impervious interface's pressure (order_mms_exact.hpp) is not regular on the axis.
+  ASSERT_FALSE(c.axisymmetric && c.seam == Seam::mechanical) << "no such axisymmetric case";
   const std::string cell = std::string(c.axisymmetric ? "axisymmetric " : "") +
                            (c.dim == 2 ? (c.simplex ? "triangles" : "quadrilaterals")
                                        : (c.simplex ? "tetrahedra" : "hexahedra")) +

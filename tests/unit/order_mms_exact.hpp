@@ -1,12 +1,12 @@
-// The manufactured fields of test_order_mms.cpp: sums of products of sines, their derivatives
-// of any order in closed form, and the body force and fluid source that make them a solution
-// of quasi-static Biot (plane strain, axisymmetric, 3D).
+// The manufactured fields of the element-order tests (order_mms.hpp): sums of products of sines,
+// their derivatives of any order in closed form, and the body force and fluid source that make them
+// a solution of quasi-static Biot (plane strain, axisymmetric, 3D).
 //
 // With a cohesive interface at x = x0 (side 1 at x < x0, its normal e1 = +x), the fields of
 // side 2 are those of side 1 plus a jump field built from side 1's state on the interface, so
 // that the pair is an exact solution of the interface laws in their closed, sticking regime
 // (docs/physics.md sections 4 and 5; src/assembly/interface_assembly.cpp):
-//   mechanics: the total traction t = sigma(u) e1 - alpha p e1 is continuous, and
+//   mechanics: the total traction t = sigma'(u) e1 - alpha p e1 is continuous, and
 //              t = K_N g_N e1 + K_T g_T - p3 e1 with the gap g = u2 - u1 (g_N < 0: compressed,
 //              p'_N = -K_N g_N > 0; friction large enough never to slip);
 //   flow:      f1 = T1 (p1 - p3) is side 1's Darcy outflow -kappa dp1/dx, f2 = T2 (p3 - p2) is
