@@ -10,7 +10,7 @@ import platform
 
 import numpy as np
 
-FIXED = ["path", "kind", "integrator", "solver", "ranks", "index", "mesh_size_factor", "dt",
+FIXED = ["path", "kind", "integrator", "solver", "ranks", "displacement_order", "index", "mesh_size_factor", "dt",
          "dt_initial", "varied", "parameter", "parameter_value", "status", "unknowns"]
 COST = ["steps", "rejected", "wall_total_s", "wall_steps_s", "wall_per_step_s", "newton",
         "krylov", "peak_memory_mb_per_rank"]
@@ -57,6 +57,8 @@ def settings(r):
     if r["varied"]:
         s.append(r["varied"])
     s.append(r["integrator"])
+    if "displacement_order" in r:
+        s.append(f"order {r['displacement_order']}")
     s.append(r["solver"])
     s.append(f"{r['ranks']} rank{'s' if r['ranks'] > 1 else ''}")
     return ", ".join(s)
@@ -126,20 +128,13 @@ def write_md(st, rows, summary, path):
     L += ["| quantity | target | cheapest settings | unknowns | steps | wall time | per step | error |",
           "|---|---|---|---|---|---|---|---|"]
     for q in st.quantities.values():
-        errs = [(r, r[f"{q.name}_error"]) for r in ok if np.isfinite(r[f"{q.name}_error"])]
-        est = None
-        if q.name in refs and q.reference["kind"] in ("richardson", "finest", "study"):
-            v = np.atleast_1d(refs[q.name]["value"])
-            sc = float(np.max(np.abs(v))) if q.scale == "reference" else q.scale
-            est = float(np.max(np.atleast_1d(refs[q.name]["estimated_error"]))) / sc
+        est = _reference_error(st, q, refs)
         for tgt in st.targets:
-            good = [r for r, e in errs if e <= tgt]
+            c = cheapest(ok, q.name, tgt)
             note = " (below the reference's own error estimate)" if est is not None and tgt < est else ""
-            robust = [r for r in good if _holds(r, q.name, tgt, errs)]
-            if good:
-                b = min(robust or good, key=lambda r: r["wall_total_s"])
-                lucky = min(good, key=lambda r: r["wall_total_s"])
-                if not robust:
+            if c["best"] is not None:
+                b, lucky = c["best"], c["lucky"]
+                if not c["robust"]:
                     note += (" (only by a cancellation of errors: finer runs of its path miss "
                              "the target)")
                 elif lucky["wall_total_s"] < b["wall_total_s"]:
@@ -149,14 +144,15 @@ def write_md(st, rows, summary, path):
                 L.append(f"| {q.name} | {_pct(tgt)} | {settings(b)}{note} | {b['unknowns']} | "
                          f"{b['steps']} | {b['wall_total_s']:.2f} s | {b['wall_per_step_s']:.3g} s | "
                          f"{_pct(b[f'{q.name}_error'])} |")
+            elif c["closest"] is not None:
+                b = c["closest"]
+                e = b[f"{q.name}_error"]
+                L.append(f"| {q.name} | {_pct(tgt)} | not reached{note}; best {_pct(e)}: "
+                         f"{settings(b)} | {b['unknowns']} | {b['steps']} | "
+                         f"{b['wall_total_s']:.2f} s | {b['wall_per_step_s']:.3g} s | {_pct(e)} |")
             else:
-                if errs:
-                    b, e = min(errs, key=lambda x: x[1])
-                    L.append(f"| {q.name} | {_pct(tgt)} | not reached{note}; best {_pct(e)}: "
-                             f"{settings(b)} | {b['unknowns']} | {b['steps']} | "
-                             f"{b['wall_total_s']:.2f} s | {b['wall_per_step_s']:.3g} s | {_pct(e)} |")
-                else:
-                    L.append(f"| {q.name} | {_pct(tgt)} | no run measured it | | | | | |")
+                L.append(f"| {q.name} | {_pct(tgt)} | no run measured it | | | | | |")
+    L += by_order(st, ok)
     L += ["", "## Observed orders", "",
           "Per refinement path: *error slope* = least-squares slope of log(error) against "
           "log(parameter) (mesh size factor, proportional to h, or dt), and of the finest pair; "
@@ -205,6 +201,96 @@ def write_md(st, rows, summary, path):
         f.write("\n".join(L))
 
 
+def _reference_error(st, q, refs):
+    """The reference's own estimated error, relative, or None (a closed form)."""
+    if q.name in refs and q.reference["kind"] in ("richardson", "finest", "study"):
+        v = np.atleast_1d(refs[q.name]["value"])
+        sc = float(np.max(np.abs(v))) if q.scale == "reference" else q.scale
+        return float(np.max(np.atleast_1d(refs[q.name]["estimated_error"]))) / sc
+    return None
+
+
+def cheapest(ok, name, tgt):
+    """The choice for one quantity and target among finished runs `ok`: {"best": the least
+    total wall time among the runs whose error is at most tgt and stays so on every finer run
+    of their path line (if none: the cheapest that meets it at all), "robust": whether best
+    is such a run, "lucky": the cheapest that meets it at all, "closest": the run of least
+    error (for "not reached")}; None where there is no such run."""
+    errs = [(r, r[f"{name}_error"]) for r in ok if np.isfinite(r[f"{name}_error"])]
+    good = [r for r, e in errs if e <= tgt]
+    robust = [r for r in good if _holds(r, name, tgt, errs)]
+    wall = lambda r: r["wall_total_s"]  # noqa: E731
+    return {"best": min(robust or good, key=wall) if good else None, "robust": bool(robust),
+            "lucky": min(good, key=wall) if good else None,
+            "closest": min(errs, key=lambda x: x[1])[0] if errs else None}
+
+
+def cheapest_by_order(ok, name, tgt):
+    """{element order: cheapest(...)} over the runs of each displacement order."""
+    orders = sorted({r["displacement_order"] for r in ok})
+    return {o: cheapest([r for r in ok if r["displacement_order"] == o], name, tgt)
+            for o in orders}
+
+
+def by_order(st, ok):
+    """study.md's per-order table: for each quantity and target the cheapest run at each
+    element order and the ratio of their wall times (empty with one order)."""
+    orders = sorted({r["displacement_order"] for r in ok})
+    if len(orders) < 2:
+        return []
+    L = ["", "## What an accuracy costs at each element order", "",
+         "The same choice among the runs of one displacement order at a time (order 1: "
+         "linear displacement, stabilised; order 2: quadratic displacement, linear pressure, "
+         "Taylor-Hood). The ratio is the wall time of the cheapest order-" + str(orders[-1])
+         + " run over that of the cheapest order-" + str(orders[0]) + " run: below 1 the "
+         "higher order is cheaper. Only the runs the study tried: a coarser mesh than its "
+         "coarsest might have met a target more cheaply.", "",
+         "| quantity | target | " + " | ".join(f"cheapest order-{o} run | wall time" for o in orders)
+         + f" | ratio {orders[-1]} / {orders[0]} |",
+         "|---|---|" + "---|---|" * len(orders) + "---|"]
+    for q in st.quantities.values():
+        for tgt in st.targets:
+            got = cheapest_by_order(ok, q.name, tgt)
+            cells = []
+            for o in orders:
+                c = got[o]
+                if c["best"] is not None:
+                    b = c["best"]
+                    cells.append(f"{_short(b)}, {b['unknowns']} unknowns, "
+                                 f"{_pct(b[f'{q.name}_error'])}"
+                                 + ("" if c["robust"] else " (by a cancellation)")
+                                 + f" | {b['wall_total_s']:.2f} s")
+                elif c["closest"] is not None:
+                    cells.append(f"not reached (best {_pct(c['closest'][f'{q.name}_error'])}) | -")
+                else:
+                    cells.append("- | -")
+            lo, hi = got[orders[0]]["best"], got[orders[-1]]["best"]
+            ratio = (f"{hi['wall_total_s'] / lo['wall_total_s']:.2f}" if lo is not None
+                     and hi is not None and lo["wall_total_s"] > 0 else "-")
+            L.append(f"| {q.name} | {_pct(tgt)} | " + " | ".join(cells) + f" | {ratio} |")
+    return L
+
+
+def order_ratio(ok, name, tgt):
+    """Wall time of the cheapest highest-order run over that of the cheapest lowest-order run
+    for one quantity and target (nan when either order misses the target)."""
+    got = cheapest_by_order(ok, name, tgt)
+    orders = sorted(got)
+    lo, hi = got[orders[0]]["best"], got[orders[-1]]["best"]
+    if lo is None or hi is None or len(orders) < 2:
+        return float("nan")
+    return hi["wall_total_s"] / lo["wall_total_s"]
+
+
+def _short(r):
+    """A run's settings in few words (the per-order table): path, mesh factor, dt."""
+    s = f"{r['path']} f{r['mesh_size_factor']:g}"
+    s += f" dt0 {r['dt_initial']:g}" if r["kind"] == "adaptive" else f" dt {r['dt']:g}"
+    if r["varied"]:
+        s += f" {r['varied']}"
+    return s + f" {r['integrator']}"
+
+
 def _holds(r, name, tgt, errs):
     """True when every finer run (later on the same path line) also has an error <= tgt."""
     return all(e <= tgt for x, e in errs if x["line"] == r["line"] and x["index"] > r["index"])
@@ -248,6 +334,15 @@ def plot(st, rows, summary, path):
             lines.append(r["line"])
     order = {(o["line"], o["quantity"]): o for o in summary["orders"]}
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    # element orders: one colour per path line, one line style and marker per order (order 1
+    # solid with circles, order 2 dashed with squares), so a path's two orders sit side by side
+    elem = sorted({r.get("displacement_order", 1) for r in rows})
+    styles = {o: s for o, s in zip(elem, ["o-", "s--", "^:", "D-."])}
+    hue, line_order = {}, {}
+    for r in rows:
+        line_order[r["line"]] = r.get("displacement_order", 1)
+        hue.setdefault((r["path"], r["integrator"], r["solver"], r["ranks"]), len(hue))
+    line_hue = {r["line"]: hue[(r["path"], r["integrator"], r["solver"], r["ranks"])] for r in rows}
     # second panel: against the unknowns, or (a study of tolerances only: one discretisation)
     # against the Krylov iterations, the work without the noise of a shared machine's clock
     tol_only = all(r["kind"] == "tolerance" for r in rows)
@@ -260,15 +355,16 @@ def plot(st, rows, summary, path):
                   and np.isfinite(r[f"{q.name}_error"]) and r[f"{q.name}_error"] > 0]
             if not rs:
                 continue
-            c = colors[li % len(colors)]
+            c = colors[line_hue[ln] % len(colors)]
+            st_ = styles.get(line_order[ln], "o-")
             e = [100.0 * r[f"{q.name}_error"] for r in rs]
-            a1.loglog([r["wall_total_s"] for r in rs], e, "o-", color=c, label=ln)
+            a1.loglog([r["wall_total_s"] for r in rs], e, st_, color=c, label=ln)
             for r in rs:
                 labels1.add(_label(r), r["wall_total_s"], 100.0 * r[f"{q.name}_error"], c)
             o = order.get((ln, q.name), {})
             so = o.get("observed_order", float("nan"))
             sl = o.get("error_slope", float("nan"))
-            a2.loglog([r[work] for r in rs], e, "o-", color=c,
+            a2.loglog([r[work] for r in rs], e, st_, color=c,
                       label=f"{ln}: error slope vs {rs[0]['parameter']} "
                             f"{sl:.2f}, observed order {so:.2f}"
                             if np.isfinite(so) and rs[0]["kind"] != "tolerance" else
@@ -309,7 +405,12 @@ def plot(st, rows, summary, path):
         a2.grid(True, which="both", alpha=0.3)
         a1.legend(fontsize=7)
         a2.legend(fontsize=7)
-    fig.suptitle(f"study {st.name}: {st.title}", fontsize=12)
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.45 / fig.get_figheight()))  # room for the title
+    title = f"study {st.name}: {st.title}"
+    if len(elem) > 1:
+        words = {"o-": "solid, circles", "s--": "dashed, squares", "^:": "dotted, triangles",
+                 "D-.": "dash-dot, diamonds"}
+        title += "\n" + "; ".join(f"displacement order {o}: {words[s]}" for o, s in styles.items())
+    fig.suptitle(title, fontsize=12)
+    fig.tight_layout(rect=(0, 0, 1, 1 - (0.45 if len(elem) < 2 else 0.7) / fig.get_figheight()))
     fig.savefig(path, dpi=110)
     plt.close(fig)
