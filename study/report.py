@@ -321,6 +321,30 @@ class _Labels:
                          color=color)
 
 
+ORDER_STYLES = ["o-", "s--", "^:", "D-."]  # element order 1, 2, ...: line style and marker
+
+
+def line_styles(rows):
+    """How each line of the plot is drawn: ({line: colour index}, {line: matplotlib format},
+    {element order: format}). One line style and marker per displacement order (order 1
+    solid with circles, order 2 dashed with squares); one colour per the k-th line of a kind,
+    integrator, solver and ranks at its order, so that a path and its order-2 twin (space
+    and space_o2) share a colour and differ in style."""
+    elem = sorted({r.get("displacement_order", 1) for r in rows})
+    styles = {o: s for o, s in zip(elem, ORDER_STYLES)}
+    hue, line_hue, line_style, nth = {}, {}, {}, {}
+    for r in rows:
+        if r["line"] in line_hue:
+            continue
+        o = r.get("displacement_order", 1)
+        like = (r["kind"], r["integrator"], r["solver"], r["ranks"])
+        k = nth.setdefault((like, o), [])
+        k.append(r["line"])
+        line_style[r["line"]] = styles.get(o, "o-")
+        line_hue[r["line"]] = hue.setdefault((like, len(k)), len(hue))
+    return line_hue, line_style, styles
+
+
 def plot(st, rows, summary, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -334,15 +358,7 @@ def plot(st, rows, summary, path):
             lines.append(r["line"])
     order = {(o["line"], o["quantity"]): o for o in summary["orders"]}
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    # element orders: one colour per path line, one line style and marker per order (order 1
-    # solid with circles, order 2 dashed with squares), so a path's two orders sit side by side
-    elem = sorted({r.get("displacement_order", 1) for r in rows})
-    styles = {o: s for o, s in zip(elem, ["o-", "s--", "^:", "D-."])}
-    hue, line_order = {}, {}
-    for r in rows:
-        line_order[r["line"]] = r.get("displacement_order", 1)
-        hue.setdefault((r["path"], r["integrator"], r["solver"], r["ranks"]), len(hue))
-    line_hue = {r["line"]: hue[(r["path"], r["integrator"], r["solver"], r["ranks"])] for r in rows}
+    line_hue, line_style, styles = line_styles(rows)
     # second panel: against the unknowns, or (a study of tolerances only: one discretisation)
     # against the Krylov iterations, the work without the noise of a shared machine's clock
     tol_only = all(r["kind"] == "tolerance" for r in rows)
@@ -356,7 +372,7 @@ def plot(st, rows, summary, path):
             if not rs:
                 continue
             c = colors[line_hue[ln] % len(colors)]
-            st_ = styles.get(line_order[ln], "o-")
+            st_ = line_style[ln]
             e = [100.0 * r[f"{q.name}_error"] for r in rs]
             a1.loglog([r["wall_total_s"] for r in rs], e, st_, color=c, label=ln)
             for r in rs:
@@ -406,11 +422,11 @@ def plot(st, rows, summary, path):
         a1.legend(fontsize=7)
         a2.legend(fontsize=7)
     title = f"study {st.name}: {st.title}"
-    if len(elem) > 1:
+    if len(styles) > 1:
         words = {"o-": "solid, circles", "s--": "dashed, squares", "^:": "dotted, triangles",
                  "D-.": "dash-dot, diamonds"}
         title += "\n" + "; ".join(f"displacement order {o}: {words[s]}" for o, s in styles.items())
     fig.suptitle(title, fontsize=12)
-    fig.tight_layout(rect=(0, 0, 1, 1 - (0.45 if len(elem) < 2 else 0.7) / fig.get_figheight()))
+    fig.tight_layout(rect=(0, 0, 1, 1 - (0.45 if len(styles) < 2 else 0.7) / fig.get_figheight()))
     fig.savefig(path, dpi=110)
     plt.close(fig)
