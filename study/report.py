@@ -121,8 +121,9 @@ def write_md(st, rows, summary, path):
         L.append(f"| **{q.name}**: {q.label} | {meas} | {err} | {ref} | {est} |")
     L += ["", "## What an accuracy costs", "",
           "The cheapest run found (least total wall time) whose error is at most the target "
-          "and stays at most the target on every finer run of its path; \"not reached\" gives "
-          "the best error found. A run that meets a target only by a cancellation of errors "
+          "and stays at most the target on every finer run of each path it is on (a run on "
+          "a space, a time and a combined path must hold on all three); \"not reached\" "
+          "gives the best error found. A run that meets a target only by a cancellation of errors "
           "(space against time: a finer run of its path misses the target) is not chosen; "
           "when it would have been cheaper it is named in brackets.", ""]
     L += ["| quantity | target | cheapest settings | unknowns | steps | wall time | per step | error |",
@@ -292,8 +293,15 @@ def _short(r):
 
 
 def _holds(r, name, tgt, errs):
-    """True when every finer run (later on the same path line) also has an error <= tgt."""
-    return all(e <= tgt for x, e in errs if x["line"] == r["line"] and x["index"] > r["index"])
+    """True when every finer run also has an error <= tgt: later on the run's path line, and
+    on every other line that has the same run (the same settings, one cache key: a time
+    path's run that is also on the space and the combined path must hold on all three, or
+    its error is a cancellation of space against time)."""
+    key = r.get("key")
+    at = [(x["line"], x["index"]) for x, _ in errs
+          if x is r or (key is not None and x.get("key") == key)]
+    return all(e <= tgt for x, e in errs for line, index in at
+               if x["line"] == line and x["index"] > index)
 
 
 def _label(r):

@@ -10,7 +10,8 @@ given fabricated runs.
     report  the cheapest run per order and target, the ratio of their wall times, the
             per-order table of study.md and the plot's line styles, on fabricated runs whose
             answer is known by construction (including a cheaper order-2 run that meets a
-            target only by a cancellation of errors, and an order that misses a target)"""
+            target only by a cancellation of errors, an order that misses a target, and a run
+            on two path lines that holds on one of them only)"""
 import math
 import os
 import shutil
@@ -136,9 +137,9 @@ def spec_checks():
           {r.displacement_order for r in plan} == {2})
 
 
-def run(path, order, index, error, wall, unknowns=100):
+def run(path, order, index, error, wall, unknowns=100, key=None):
     """A fabricated finished run on line `path, order` (finer with index)."""
-    return {"path": path, "kind": "space", "integrator": "beuler", "solver": "direct",
+    return {"key": key or f"{path}-{order}-{index}","path": path, "kind": "space", "integrator": "beuler", "solver": "direct",
             "ranks": 1, "displacement_order": order, "index": index, "line": f"{path}, {order}",
             "mesh_size_factor": 2.0 ** -index, "dt": 0.1, "dt_initial": 0.1, "varied": "",
             "parameter": "mesh_size_factor", "parameter_value": 2.0 ** -index, "status": "ok",
@@ -177,6 +178,15 @@ def report_checks():
               f"{ratio:.4g}, expected {expected:.4g}")
     check("the cancellation run is the order's lucky one at 1 %, not its choice",
           report.cheapest_by_order(rows, "q", 0.01)[2]["lucky"]["wall_total_s"] == 0.5)
+
+    # one run (one key) on two lines: it must hold on both; here a finer run of the space
+    # line misses 1 % (a cancellation), so the choice is the combined path's next run
+    shared = [run("space", 1, 0, 0.005, 1.0, key="k"), run("space", 1, 1, 0.02, 2.0),
+              run("both", 1, 0, 0.005, 1.0, key="k"), run("both", 1, 1, 0.001, 3.0)]
+    c = report.cheapest(shared, "q", 0.01)
+    check("a run on two lines must hold on both (else a cancellation, not chosen)",
+          c["best"]["wall_total_s"] == 3.0 and c["lucky"]["wall_total_s"] == 1.0,
+          f"chosen {c['best']['wall_total_s']} s")
 
     class Q:
         name, label, unit = "q", "a quantity", "%"
