@@ -197,14 +197,20 @@ def report_checks():
 
     md = "\n".join(report.by_order(St(), rows))
     line = [x for x in md.splitlines() if x.startswith("| q | 1 % |")]
-    check("study.md per-order row at 1 %: both choices and the ratio 0.38",
+    check("study.md per-order row at 1 %: both choices, the ratio 0.38 and order 2 cheaper",
           len(line) == 1 and "space f0.25 " in line[0] and "4.00 s" in line[0]
           and "space_o2 f0.25 " in line[0] and "1.50 s" in line[0]
-          and line[0].rstrip().endswith("| 0.38 |"), line[0] if line else md)
+          and line[0].rstrip().endswith("| 0.38, order 2 |"), line[0] if line else md)
     line = [x for x in md.splitlines() if x.startswith("| q | 0.1 % |")]
     check("study.md per-order row at 0.1 %: not reached at either order, no ratio",
           len(line) == 1 and line[0].count("not reached") == 2
           and line[0].rstrip().endswith("| - |"), line[0] if line else md)
+    order1_only = rows + [run("space", 1, 4, 0.0005, 20.0)]  # order 1 alone reaches 0.1 %
+    line = [x for x in "\n".join(report.by_order(St(), order1_only)).splitlines()
+            if x.startswith("| q | 0.1 % |")]
+    check("study.md per-order row at 0.1 % when order 1 alone reaches it: 'order 1 only'",
+          len(line) == 1 and "20.00 s" in line[0] and line[0].rstrip().endswith("| order 1 only |"),
+          line[0] if line else "")
     check("one order only: no per-order table",
           report.by_order(St(), [r for r in rows if r["displacement_order"] == 1]) == [])
     hue, style, _ = report.line_styles(rows)
