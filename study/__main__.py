@@ -233,6 +233,7 @@ def orders(st, plan, rows, values):
             so = measure.self_order(q, [plan[i].value for i in have],
                                     [values[(plan[i].key, q.name)][1] for i in have])
             out.append({"line": ln, "path": rs[0].path, "kind": rs[0].kind,
+                        "displacement_order": rs[0].displacement_order,
                         "parameter": rs[0].parameter, "quantity": q.name, "runs": len(ok),
                         "error_slope": fit, "error_slope_finest_pair": last,
                         "observed_order": so, "slope_vs_unknowns": fit_n})

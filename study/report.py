@@ -19,12 +19,12 @@ COST = ["steps", "rejected", "wall_total_s", "wall_steps_s", "wall_per_step_s", 
 def write(st, rows, summary, out, plots=True):
     write_csv(st, rows, os.path.join(out, "study.csv"))
     with open(os.path.join(out, "orders.csv"), "w", newline="") as f:
-        cols = ["path", "kind", "parameter", "quantity", "runs", "error_slope",
+        cols = ["path", "kind", "displacement_order", "parameter", "quantity", "runs", "error_slope",
                 "error_slope_finest_pair", "observed_order", "slope_vs_unknowns", "line"]
         w = csv.DictWriter(f, fieldnames=cols, extrasaction="ignore")
         w.writeheader()
         for o in summary["orders"]:
-            w.writerow({c: _fmt(o[c]) for c in cols})
+            w.writerow({c: _fmt(o.get(c, "")) for c in cols})
     write_md(st, rows, summary, os.path.join(out, "study.md"))
     if plots:
         plot(st, rows, summary, os.path.join(out, "work_precision.png"))
