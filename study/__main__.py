@@ -122,10 +122,11 @@ def evaluate(st, plan, results, a):
             line = [r for r in plan if r.path == ref[ref["kind"]]
                     and r.integrator == ref.get("integrator", r.integrator)
                     and r.solver == ref.get("solver", r.solver)
-                    and r.ranks == ref.get("ranks", r.ranks)]
+                    and r.ranks == ref.get("ranks", r.ranks)
+                    and r.displacement_order == ref.get("displacement_order",
+                                                        r.displacement_order)]
             first = line[0] if line else None
-            line = [r for r in line if (r.integrator, r.solver, r.ranks) ==
-                    (first.integrator, first.solver, first.ranks) and (r.key, q.name) in values]
+            line = [r for r in line if r.line == first.line and (r.key, q.name) in values]
             if len(line) < 2:
                 raise StudyError(f"{st.file}: quantities.{q.name}: the reference path "
                                  f"'{ref[ref['kind']]}' has fewer than 2 runs that finished")
@@ -161,7 +162,8 @@ def evaluate(st, plan, results, a):
     for r in plan:
         res = results[r.key]
         row = {"path": r.path, "kind": r.kind, "integrator": r.integrator, "solver": r.solver,
-               "ranks": r.ranks, "index": r.index, "mesh_size_factor": r.point["mesh_size_factor"],
+               "ranks": r.ranks, "displacement_order": r.displacement_order,
+               "index": r.index, "mesh_size_factor": r.point["mesh_size_factor"],
                "dt": r.point["dt"] if r.kind != "adaptive" else float("nan"),
                "dt_initial": r.point["dt"],
                "varied": " ".join(f"{k} {v}" for k, v in r.point["vary"].items()),
@@ -231,6 +233,7 @@ def orders(st, plan, rows, values):
             so = measure.self_order(q, [plan[i].value for i in have],
                                     [values[(plan[i].key, q.name)][1] for i in have])
             out.append({"line": ln, "path": rs[0].path, "kind": rs[0].kind,
+                        "displacement_order": rs[0].displacement_order,
                         "parameter": rs[0].parameter, "quantity": q.name, "runs": len(ok),
                         "error_slope": fit, "error_slope_finest_pair": last,
                         "observed_order": so, "slope_vs_unknowns": fit_n})
@@ -253,7 +256,9 @@ def main(argv=None):
         studies = [spec.load(n) for n in names]  # check every file before running anything
         if a.check:
             for st in studies:
-                print(f"{st.file}: ok ({sum(len(x.points) * len(x.integrators) * len(x.solvers) * len(x.ranks) for x in st.paths.values())} runs)")
+                n = sum(len(x.points) * len(x.integrators) * len(x.solvers) * len(x.ranks)
+                        * len(x.displacement_orders or [None]) for x in st.paths.values())
+                print(f"{st.file}: ok ({n} runs)")
             return 0
         exe = executable()
         done = set()

@@ -10,7 +10,7 @@ import platform
 
 import numpy as np
 
-FIXED = ["path", "kind", "integrator", "solver", "ranks", "index", "mesh_size_factor", "dt",
+FIXED = ["path", "kind", "integrator", "solver", "ranks", "displacement_order", "index", "mesh_size_factor", "dt",
          "dt_initial", "varied", "parameter", "parameter_value", "status", "unknowns"]
 COST = ["steps", "rejected", "wall_total_s", "wall_steps_s", "wall_per_step_s", "newton",
         "krylov", "peak_memory_mb_per_rank"]
@@ -19,12 +19,12 @@ COST = ["steps", "rejected", "wall_total_s", "wall_steps_s", "wall_per_step_s", 
 def write(st, rows, summary, out, plots=True):
     write_csv(st, rows, os.path.join(out, "study.csv"))
     with open(os.path.join(out, "orders.csv"), "w", newline="") as f:
-        cols = ["path", "kind", "parameter", "quantity", "runs", "error_slope",
+        cols = ["path", "kind", "displacement_order", "parameter", "quantity", "runs", "error_slope",
                 "error_slope_finest_pair", "observed_order", "slope_vs_unknowns", "line"]
         w = csv.DictWriter(f, fieldnames=cols, extrasaction="ignore")
         w.writeheader()
         for o in summary["orders"]:
-            w.writerow({c: _fmt(o[c]) for c in cols})
+            w.writerow({c: _fmt(o.get(c, "")) for c in cols})
     write_md(st, rows, summary, os.path.join(out, "study.md"))
     if plots:
         plot(st, rows, summary, os.path.join(out, "work_precision.png"))
@@ -57,6 +57,8 @@ def settings(r):
     if r["varied"]:
         s.append(r["varied"])
     s.append(r["integrator"])
+    if "displacement_order" in r:
+        s.append(f"order {r['displacement_order']}")
     s.append(r["solver"])
     s.append(f"{r['ranks']} rank{'s' if r['ranks'] > 1 else ''}")
     return ", ".join(s)
@@ -119,27 +121,21 @@ def write_md(st, rows, summary, path):
         L.append(f"| **{q.name}**: {q.label} | {meas} | {err} | {ref} | {est} |")
     L += ["", "## What an accuracy costs", "",
           "The cheapest run found (least total wall time) whose error is at most the target "
-          "and stays at most the target on every finer run of its path; \"not reached\" gives "
-          "the best error found. A run that meets a target only by a cancellation of errors "
+          "and stays at most the target on every finer run of each path it is on (a run on "
+          "a space, a time and a combined path must hold on all three); \"not reached\" "
+          "gives the best error found. A run that meets a target only by a cancellation of errors "
           "(space against time: a finer run of its path misses the target) is not chosen; "
           "when it would have been cheaper it is named in brackets.", ""]
     L += ["| quantity | target | cheapest settings | unknowns | steps | wall time | per step | error |",
           "|---|---|---|---|---|---|---|---|"]
     for q in st.quantities.values():
-        errs = [(r, r[f"{q.name}_error"]) for r in ok if np.isfinite(r[f"{q.name}_error"])]
-        est = None
-        if q.name in refs and q.reference["kind"] in ("richardson", "finest", "study"):
-            v = np.atleast_1d(refs[q.name]["value"])
-            sc = float(np.max(np.abs(v))) if q.scale == "reference" else q.scale
-            est = float(np.max(np.atleast_1d(refs[q.name]["estimated_error"]))) / sc
+        est = _reference_error(st, q, refs)
         for tgt in st.targets:
-            good = [r for r, e in errs if e <= tgt]
+            c = cheapest(ok, q.name, tgt)
             note = " (below the reference's own error estimate)" if est is not None and tgt < est else ""
-            robust = [r for r in good if _holds(r, q.name, tgt, errs)]
-            if good:
-                b = min(robust or good, key=lambda r: r["wall_total_s"])
-                lucky = min(good, key=lambda r: r["wall_total_s"])
-                if not robust:
+            if c["best"] is not None:
+                b, lucky = c["best"], c["lucky"]
+                if not c["robust"]:
                     note += (" (only by a cancellation of errors: finer runs of its path miss "
                              "the target)")
                 elif lucky["wall_total_s"] < b["wall_total_s"]:
@@ -149,14 +145,15 @@ def write_md(st, rows, summary, path):
                 L.append(f"| {q.name} | {_pct(tgt)} | {settings(b)}{note} | {b['unknowns']} | "
                          f"{b['steps']} | {b['wall_total_s']:.2f} s | {b['wall_per_step_s']:.3g} s | "
                          f"{_pct(b[f'{q.name}_error'])} |")
+            elif c["closest"] is not None:
+                b = c["closest"]
+                e = b[f"{q.name}_error"]
+                L.append(f"| {q.name} | {_pct(tgt)} | not reached{note}; best {_pct(e)}: "
+                         f"{settings(b)} | {b['unknowns']} | {b['steps']} | "
+                         f"{b['wall_total_s']:.2f} s | {b['wall_per_step_s']:.3g} s | {_pct(e)} |")
             else:
-                if errs:
-                    b, e = min(errs, key=lambda x: x[1])
-                    L.append(f"| {q.name} | {_pct(tgt)} | not reached{note}; best {_pct(e)}: "
-                             f"{settings(b)} | {b['unknowns']} | {b['steps']} | "
-                             f"{b['wall_total_s']:.2f} s | {b['wall_per_step_s']:.3g} s | {_pct(e)} |")
-                else:
-                    L.append(f"| {q.name} | {_pct(tgt)} | no run measured it | | | | | |")
+                L.append(f"| {q.name} | {_pct(tgt)} | no run measured it | | | | | |")
+    L += by_order(st, ok)
     L += ["", "## Observed orders", "",
           "Per refinement path: *error slope* = least-squares slope of log(error) against "
           "log(parameter) (mesh size factor, proportional to h, or dt), and of the finest pair; "
@@ -205,9 +202,115 @@ def write_md(st, rows, summary, path):
         f.write("\n".join(L))
 
 
+def _reference_error(st, q, refs):
+    """The reference's own estimated error, relative, or None (a closed form)."""
+    if q.name in refs and q.reference["kind"] in ("richardson", "finest", "study"):
+        v = np.atleast_1d(refs[q.name]["value"])
+        sc = float(np.max(np.abs(v))) if q.scale == "reference" else q.scale
+        return float(np.max(np.atleast_1d(refs[q.name]["estimated_error"]))) / sc
+    return None
+
+
+def cheapest(ok, name, tgt):
+    """The choice for one quantity and target among finished runs `ok`: {"best": the least
+    total wall time among the runs whose error is at most tgt and stays so on every finer run
+    of their path line (if none: the cheapest that meets it at all), "robust": whether best
+    is such a run, "lucky": the cheapest that meets it at all, "closest": the run of least
+    error (for "not reached")}; None where there is no such run."""
+    errs = [(r, r[f"{name}_error"]) for r in ok if np.isfinite(r[f"{name}_error"])]
+    good = [r for r, e in errs if e <= tgt]
+    robust = [r for r in good if _holds(r, name, tgt, errs)]
+    wall = lambda r: r["wall_total_s"]  # noqa: E731
+    return {"best": min(robust or good, key=wall) if good else None, "robust": bool(robust),
+            "lucky": min(good, key=wall) if good else None,
+            "closest": min(errs, key=lambda x: x[1])[0] if errs else None}
+
+
+def cheapest_by_order(ok, name, tgt):
+    """{element order: cheapest(...)} over the runs of each displacement order."""
+    orders = sorted({r["displacement_order"] for r in ok})
+    return {o: cheapest([r for r in ok if r["displacement_order"] == o], name, tgt)
+            for o in orders}
+
+
+def by_order(st, ok):
+    """study.md's per-order table: for each quantity and target the cheapest run at each
+    element order and the ratio of their wall times (empty with one order)."""
+    orders = sorted({r["displacement_order"] for r in ok})
+    if len(orders) < 2:
+        return []
+    L = ["", "## What an accuracy costs at each element order", "",
+         "The same choice among the runs of one displacement order at a time (order 1: "
+         "linear displacement, stabilised; order 2: quadratic displacement, linear pressure, "
+         "Taylor-Hood). The ratio is the wall time of the cheapest order-" + str(orders[-1])
+         + " run over that of the cheapest order-" + str(orders[0]) + " run (below 1 the "
+         "higher order is cheaper), then the cheaper order. Only the runs the study tried: a coarser mesh than its "
+         "coarsest might have met a target more cheaply.", "",
+         "| quantity | target | " + " | ".join(f"cheapest order-{o} run | wall time" for o in orders)
+         + f" | ratio {orders[-1]} / {orders[0]}, cheaper order |",
+         "|---|---|" + "---|---|" * len(orders) + "---|"]
+    for q in st.quantities.values():
+        for tgt in st.targets:
+            got = cheapest_by_order(ok, q.name, tgt)
+            cells = []
+            for o in orders:
+                c = got[o]
+                if c["best"] is not None:
+                    b = c["best"]
+                    cells.append(f"{_short(b)}, {b['unknowns']} unknowns, "
+                                 f"{_pct(b[f'{q.name}_error'])}"
+                                 + ("" if c["robust"] else " (by a cancellation)")
+                                 + f" | {b['wall_total_s']:.2f} s")
+                elif c["closest"] is not None:
+                    cells.append(f"not reached (best {_pct(c['closest'][f'{q.name}_error'])}) | -")
+                else:
+                    cells.append("- | -")
+            L.append(f"| {q.name} | {_pct(tgt)} | " + " | ".join(cells)
+                     + f" | {_verdict(got, orders)} |")
+    return L
+
+
+def _verdict(got, orders):
+    """The ratio cell: "0.65, order 2" (the ratio and the cheaper order), "order 2 only" when
+    only one order meets the target, "-" when neither."""
+    lo, hi = got[orders[0]]["best"], got[orders[-1]]["best"]
+    if lo is not None and hi is not None and lo["wall_total_s"] > 0:
+        ratio = hi["wall_total_s"] / lo["wall_total_s"]
+        return f"{ratio:.2f}, order {orders[-1] if ratio < 1 else orders[0]}"
+    met = [o for o in orders if got[o]["best"] is not None]
+    return f"order {met[0]} only" if len(met) == 1 else "-"
+
+
+def order_ratio(ok, name, tgt):
+    """Wall time of the cheapest highest-order run over that of the cheapest lowest-order run
+    for one quantity and target (nan when either order misses the target)."""
+    got = cheapest_by_order(ok, name, tgt)
+    orders = sorted(got)
+    lo, hi = got[orders[0]]["best"], got[orders[-1]]["best"]
+    if lo is None or hi is None or len(orders) < 2:
+        return float("nan")
+    return hi["wall_total_s"] / lo["wall_total_s"]
+
+
+def _short(r):
+    """A run's settings in few words (the per-order table): path, mesh factor, dt."""
+    s = f"{r['path']} f{r['mesh_size_factor']:g}"
+    s += f" dt0 {r['dt_initial']:g}" if r["kind"] == "adaptive" else f" dt {r['dt']:g}"
+    if r["varied"]:
+        s += f" {r['varied']}"
+    return s + f" {r['integrator']}"
+
+
 def _holds(r, name, tgt, errs):
-    """True when every finer run (later on the same path line) also has an error <= tgt."""
-    return all(e <= tgt for x, e in errs if x["line"] == r["line"] and x["index"] > r["index"])
+    """True when every finer run also has an error <= tgt: later on the run's path line, and
+    on every other line that has the same run (the same settings, one cache key: a time
+    path's run that is also on the space and the combined path must hold on all three, or
+    its error is a cancellation of space against time)."""
+    key = r.get("key")
+    at = [(x["line"], x["index"]) for x, _ in errs
+          if x is r or (key is not None and x.get("key") == key)]
+    return all(e <= tgt for x, e in errs for line, index in at
+               if x["line"] == line and x["index"] > index)
 
 
 def _label(r):
@@ -235,6 +338,30 @@ class _Labels:
                          color=color)
 
 
+ORDER_STYLES = ["o-", "s--", "^:", "D-."]  # element order 1, 2, ...: line style and marker
+
+
+def line_styles(rows):
+    """How each line of the plot is drawn: ({line: colour index}, {line: matplotlib format},
+    {element order: format}). One line style and marker per displacement order (order 1
+    solid with circles, order 2 dashed with squares); one colour per the k-th line of a kind,
+    integrator, solver and ranks at its order, so that a path and its order-2 twin (space
+    and space_o2) share a colour and differ in style."""
+    elem = sorted({r.get("displacement_order", 1) for r in rows})
+    styles = {o: s for o, s in zip(elem, ORDER_STYLES)}
+    hue, line_hue, line_style, nth = {}, {}, {}, {}
+    for r in rows:
+        if r["line"] in line_hue:
+            continue
+        o = r.get("displacement_order", 1)
+        like = (r["kind"], r["integrator"], r["solver"], r["ranks"])
+        k = nth.setdefault((like, o), [])
+        k.append(r["line"])
+        line_style[r["line"]] = styles.get(o, "o-")
+        line_hue[r["line"]] = hue.setdefault((like, len(k)), len(hue))
+    return line_hue, line_style, styles
+
+
 def plot(st, rows, summary, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -248,6 +375,7 @@ def plot(st, rows, summary, path):
             lines.append(r["line"])
     order = {(o["line"], o["quantity"]): o for o in summary["orders"]}
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    line_hue, line_style, styles = line_styles(rows)
     # second panel: against the unknowns, or (a study of tolerances only: one discretisation)
     # against the Krylov iterations, the work without the noise of a shared machine's clock
     tol_only = all(r["kind"] == "tolerance" for r in rows)
@@ -260,15 +388,16 @@ def plot(st, rows, summary, path):
                   and np.isfinite(r[f"{q.name}_error"]) and r[f"{q.name}_error"] > 0]
             if not rs:
                 continue
-            c = colors[li % len(colors)]
+            c = colors[line_hue[ln] % len(colors)]
+            st_ = line_style[ln]
             e = [100.0 * r[f"{q.name}_error"] for r in rs]
-            a1.loglog([r["wall_total_s"] for r in rs], e, "o-", color=c, label=ln)
+            a1.loglog([r["wall_total_s"] for r in rs], e, st_, color=c, label=ln)
             for r in rs:
                 labels1.add(_label(r), r["wall_total_s"], 100.0 * r[f"{q.name}_error"], c)
             o = order.get((ln, q.name), {})
             so = o.get("observed_order", float("nan"))
             sl = o.get("error_slope", float("nan"))
-            a2.loglog([r[work] for r in rs], e, "o-", color=c,
+            a2.loglog([r[work] for r in rs], e, st_, color=c,
                       label=f"{ln}: error slope vs {rs[0]['parameter']} "
                             f"{sl:.2f}, observed order {so:.2f}"
                             if np.isfinite(so) and rs[0]["kind"] != "tolerance" else
@@ -309,7 +438,12 @@ def plot(st, rows, summary, path):
         a2.grid(True, which="both", alpha=0.3)
         a1.legend(fontsize=7)
         a2.legend(fontsize=7)
-    fig.suptitle(f"study {st.name}: {st.title}", fontsize=12)
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.45 / fig.get_figheight()))  # room for the title
+    title = f"study {st.name}: {st.title}"
+    if len(styles) > 1:
+        words = {"o-": "solid, circles", "s--": "dashed, squares", "^:": "dotted, triangles",
+                 "D-.": "dash-dot, diamonds"}
+        title += "\n" + "; ".join(f"displacement order {o}: {words[s]}" for o, s in styles.items())
+    fig.suptitle(title, fontsize=12)
+    fig.tight_layout(rect=(0, 0, 1, 1 - (0.45 if len(styles) < 2 else 0.7) / fig.get_figheight()))
     fig.savefig(path, dpi=110)
     plt.close(fig)

@@ -97,7 +97,8 @@ def _is_number(s):
 
 
 class Run:
-    """One run of a study: path, line (integrator, solver, ranks), index on the path,
+    """One run of a study: path, line (integrator, solver, ranks, element order),
+    displacement_order, index on the path,
     point {mesh_size_factor, dt, vary}, args (without -output_dir), key, dir, result."""
 
 
@@ -105,33 +106,49 @@ def plan(study, exe, cache):
     """The runs of a study, in path order (coarse to fine), with their keys."""
     runs = []
     ident = binary_identity(exe)
+    # the element order is named in the lines only where the study has the axis (old studies'
+    # lines, legends and tables read as before)
+    named = any(p.displacement_orders is not None for p in study.paths.values())
     for pname, path in study.paths.items():
-        for integ in path.integrators:
-            for solver in path.solvers:
-                for ranks in path.ranks:
-                    for i, pt in enumerate(path.points):
-                        r = Run()
-                        r.path, r.kind, r.integrator, r.solver, r.ranks = pname, path.kind, integ, solver, ranks
-                        r.index, r.point = i, pt
-                        r.parameter = path.parameter
-                        r.value = (pt[path.parameter] if path.parameter in ("mesh_size_factor", "dt")
-                                   else float(pt["vary"][path.parameter]))
-                        r.line = f"{pname}, {integ}, {solver}, {ranks} rank{'s' if ranks > 1 else ''}"
-                        r.args, r.tables = arguments(study, path, integ, solver, pt)
-                        r.opts = options_of(r.args)
-                        r.key = run_key(r.args, r.tables, ranks, ident)
-                        r.dir = os.path.join(cache, r.key)
-                        r.post, r.post_stamp = postprocess_command(study, r.dir)
-                        runs.append(r)
+        for order in path.displacement_orders or [None]:
+            for integ in path.integrators:
+                for solver in path.solvers:
+                    for ranks in path.ranks:
+                        for i, pt in enumerate(path.points):
+                            runs.append(_run(study, path, pname, order, integ, solver, ranks,
+                                             i, pt, named, ident, cache))
     return runs
 
 
-def arguments(study, path, integ, solver, pt):
+def _run(study, path, pname, order, integ, solver, ranks, i, pt, named, ident, cache):
+    r = Run()
+    r.path, r.kind, r.integrator, r.solver, r.ranks = pname, path.kind, integ, solver, ranks
+    r.index, r.point = i, pt
+    r.parameter = path.parameter
+    r.value = (pt[path.parameter] if path.parameter in ("mesh_size_factor", "dt")
+               else float(pt["vary"][path.parameter]))
+    r.args, r.tables = arguments(study, path, integ, solver, pt, order)
+    r.opts = options_of(r.args)
+    # the order the run has: the axis's, else the scene's own (poroseam's default 1)
+    r.displacement_order = int(float(r.opts.get("-displacement_order", "1") or 1))
+    r.line = (f"{pname}, {integ}, {solver}, {ranks} rank{'s' if ranks > 1 else ''}"
+              + (f", order {r.displacement_order}" if named else ""))
+    r.key = run_key(r.args, r.tables, ranks, ident)
+    r.dir = os.path.join(cache, r.key)
+    r.post, r.post_stamp = postprocess_command(study, r.dir)
+    return r
+
+
+def arguments(study, path, integ, solver, pt, order=None):
     """poroseam's arguments for one run (order: scene, solver preset, study options,
-    integrator, path options, the point's settings, probes, tables)."""
+    integrator, path options, the element order, the point's settings, probes, tables).
+    Without an element order (a study without displacement_orders) no -displacement_order is
+    given: the scene's own holds, and the arguments (so the cache keys) are those of before."""
     args = ["-options_file", study.scene,
             "-options_file", os.path.join(TOP, "options", "solvers", solver + ".opts")]
     args += study.options + study.integrators[integ] + path.options
+    if order is not None:
+        args += ["-displacement_order", str(order)]
     args += ["-mesh_size_factor", repr(pt["mesh_size_factor"]), "-ts_dt", repr(pt["dt"]),
              "-ts_max_time", repr(study.end_time)]
     if path.adaptive:

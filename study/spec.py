@@ -12,6 +12,7 @@ TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PATH_KINDS = ("space", "time", "both", "adaptive", "tolerance")
 REFERENCE_KINDS = ("closed_form", "value", "richardson", "finest", "study")
 DEFAULT_TARGETS = [0.1, 0.01, 0.001]
+DISPLACEMENT_ORDERS = (1, 2)  # poroseam's -displacement_order (docs/elements.md)
 
 
 class StudyError(Exception):
@@ -20,6 +21,7 @@ class StudyError(Exception):
 
 class Study:
     """A checked study: name, file, title, scene, options, end_time, ranks, solvers,
+    displacement_orders (None: the scene's own order, no -displacement_order given),
     integrators {name: [options]}, base {mesh_size_factor, dt}, probes {name: [x, y(, z)]},
     tables {option: {closed_form, ...}}, postprocess [args], paths {name: Path},
     quantities {name: Quantity}, targets, timeout."""
@@ -27,7 +29,8 @@ class Study:
 
 class Path:
     """A refinement path: kind, points (list of {mesh_size_factor, dt, vary: {option: value}}),
-    parameter (the name of what is refined), options, integrators, solvers, ranks."""
+    parameter (the name of what is refined), options, integrators, solvers, ranks,
+    displacement_orders (None: the scene's own)."""
 
 
 class Quantity:
@@ -110,7 +113,8 @@ def load(name):
     s.name = os.path.splitext(os.path.basename(path))[0]
     _known(path, "", d, ["title", "description", "scene", "options", "end_time", "ranks",
                          "solvers", "integrators", "base", "probes", "tables", "postprocess",
-                         "paths", "quantities", "targets", "timeout", "max_steps"])
+                         "paths", "quantities", "targets", "timeout", "max_steps",
+                         "displacement_orders"])
     s.title = d.get("title", s.name)
     s.description = d.get("description", "")
     if not isinstance(s.title, str) or not isinstance(s.description, str):
@@ -129,6 +133,8 @@ def load(name):
     s.max_steps = int(_number(path, "max_steps", d.get("max_steps", 100000), positive=True))
     s.ranks = _ranks(path, "ranks", d.get("ranks", [1]))
     s.solvers = _solvers(path, "solvers", d.get("solvers", ["direct"]))
+    s.displacement_orders = (_orders(path, "displacement_orders", d["displacement_orders"])
+                             if "displacement_orders" in d else None)
     integ = d.get("integrators", {"beuler": "-ts_type beuler"})
     if not isinstance(integ, dict) or not integ:
         raise _err(path, "integrators", "a table name = \"options\" (e.g. beuler = \"-ts_type "
@@ -180,6 +186,27 @@ def _ranks(path, key, v):
     return v
 
 
+def _orders(path, key, v):
+    """Element orders (-displacement_order): 1, 2 or a list of them, each a line of its own."""
+    if isinstance(v, int) and not isinstance(v, bool):
+        v = [v]
+    if not (isinstance(v, list) and v and all(isinstance(o, int) and not isinstance(o, bool)
+                                              and o in DISPLACEMENT_ORDERS for o in v)
+            and len(set(v)) == len(v)):
+        raise _err(path, key, "a displacement order or a list of distinct ones, from "
+                   + ", ".join(str(o) for o in DISPLACEMENT_ORDERS)
+                   + " (-displacement_order; e.g. [1, 2])", v)
+    return v
+
+
+def _no_order_option(path, key, opts):
+    """Where a path has displacement_orders, the order is set there alone (a
+    -displacement_order among the options would be overruled or overrule it, silently)."""
+    if "-displacement_order" in opts:
+        raise _err(path, key, "no -displacement_order here: displacement_orders (the "
+                   "study's or the path's) sets the element order", " ".join(opts))
+
+
 def _solvers(path, key, v):
     v = _strings(path, key, v)
     for p in v:
@@ -193,7 +220,8 @@ def _path(path, s, name, t):
     if not isinstance(t, dict):
         raise _err(path, k, "a table")
     _known(path, k + ".", t, ["kind", "mesh_size_factor", "dt", "vary", "options",
-                              "integrators", "solvers", "ranks", "label"])
+                              "integrators", "solvers", "ranks", "label",
+                              "displacement_orders"])
     p = Path()
     p.name = name
     p.kind = t.get("kind")
@@ -208,6 +236,14 @@ def _path(path, s, name, t):
                        + ", ".join(s.integrators), i)
     p.solvers = _solvers(path, k + ".solvers", t.get("solvers", s.solvers))
     p.ranks = _ranks(path, k + ".ranks", t.get("ranks", s.ranks))
+    p.displacement_orders = (_orders(path, k + ".displacement_orders", t["displacement_orders"])
+                             if "displacement_orders" in t else s.displacement_orders)
+    if p.displacement_orders is not None:  # one place sets the order
+        _no_order_option(path, "options", s.options)
+        for i in p.integrators:
+            _no_order_option(path, f"integrators.{i}", s.integrators[i])
+        _no_order_option(path, k + ".options", p.options)
+        _no_order_option(path, k + ".vary", list(t.get("vary", {})))
     ladders = {}
     fixed = dict(s.base)
     for key in ("mesh_size_factor", "dt"):
@@ -223,6 +259,7 @@ def _path(path, s, name, t):
     for opt, vals in vary.items():
         if not opt.startswith("-") or not isinstance(vals, list) or not vals:
             raise _err(path, f"{k}.vary.{opt}", "\"-option\" = [value, ...]", vals)
+
         ladders[opt] = [v if isinstance(v, str) else repr(float(v)) if isinstance(v, float)
                         else str(v) for v in vals]
     if not ladders:
@@ -330,12 +367,15 @@ def _quantity(path, s, name, t):
         if "order" in r:
             r["order"] = _number(path, k + ".reference.order", r["order"], positive=True)
         _known(path, k + ".reference.", r, ["kind", "richardson", "order", "integrator",
-                                            "solver", "ranks"])
+                                            "solver", "ranks", "displacement_order"])
+        _reference_order(path, k, s.paths[r["richardson"]], r)
     elif r["kind"] == "finest":
         if r["finest"] not in s.paths:
             raise _err(path, k + ".reference.finest", "the name of a path of this study",
                        r["finest"])
-        _known(path, k + ".reference.", r, ["kind", "finest", "integrator", "solver", "ranks"])
+        _known(path, k + ".reference.", r, ["kind", "finest", "integrator", "solver", "ranks",
+                                            "displacement_order"])
+        _reference_order(path, k, s.paths[r["finest"]], r)
     else:
         if not isinstance(r["study"], str) or "quantity" not in r:
             raise _err(path, k + ".reference", "{ study = \"name\", quantity = \"name\", "
@@ -343,3 +383,16 @@ def _quantity(path, s, name, t):
         r["scale"] = _number(path, k + ".reference.scale", r.get("scale", 1.0))
     q.reference = r
     return q
+
+
+def _reference_order(path, k, p, r):
+    """A reference taken from a path's runs names one of the path's element orders (default:
+    its first)."""
+    if "displacement_order" not in r:
+        return
+    have = p.displacement_orders
+    if have is None or r["displacement_order"] not in have:
+        raise _err(path, k + ".reference.displacement_order", "one of the path's "
+                   "displacement_orders" + (f" ({', '.join(str(o) for o in have)})" if have
+                                           else " (it has none: give the path or the study "
+                                           "displacement_orders)"), r["displacement_order"])
