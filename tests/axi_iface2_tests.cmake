@@ -9,3 +9,11 @@ poroseam_scene_test(interface.order2_patch_axisymmetric "interface;order;axisymm
 poroseam_scene_test(hydraulics.order2_gap_storage_axisymmetric
                     "hydraulics;interface;order;axisymmetric" hydraulics/gap_storage.py --order 2
                     --axisymmetric)
+# The coarse axisymmetric caissons at order 2 (tests/caisson/caisson.py --order 2, 1 rank): the
+# caisson's vertical equilibrium every step (interface forces with p3, ring weights), the
+# drained plateau F_ext = mu int p'_N and the outer skirt's weights adding up to 2 pi R_o L, the
+# lid gap's storage rate against rho_w v_up pi R_i^2 (partially drained).
+poroseam_scene_test(caisson.axisym_drained_order2 "caisson;order;axisymmetric"
+                    caisson/caisson.py --case axisym_drained --ranks 1 --order 2)
+poroseam_scene_test(caisson.axisym_partially_drained_order2 "caisson;order;axisymmetric"
+                    caisson/caisson.py --case axisym_partially_drained --ranks 1 --order 2)
