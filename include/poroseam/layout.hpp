@@ -33,11 +33,6 @@ std::string boundaryLabelName(const std::string &boundary);
 PetscErrorCode lateralEdgesOnBoundary(DM dm, const std::string &boundary,
                                       std::vector<PetscInt> &edges);
 
-/// The scene's displacement order is one this build can compute with the scene's features:
-/// order 2 is refused (one line, PETSC_ERR_USER_INPUT) with interfaces, axisymmetry,
-/// plasticity or probes. Called by markLayoutLabels.
-PetscErrorCode checkElementOrder(MPI_Comm comm, const Scene &scene);
-
 /// Before distribution: marks the closure of porous cells and of every scene boundary.
 PetscErrorCode markLayoutLabels(DM dm, const Scene &scene);
 

@@ -153,9 +153,12 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
       st.phi = phi;
       st.weight = surfaceWeight(e, x1.data(), dim_, q);
       if (scene_->axisymmetric) {
-        // A ring: forces and flows are for the full circle. Nodal points take the lumped
-        // weight int phi_q 2 pi r ds, not 2 pi r_q w_q, which would vanish on the axis and
-        // leave the pair of nodes there without a spring.
+        // A ring: forces and flows are for the full circle, every term weighted here once.
+        // Nodal points take the lumped weight int N_q 2 pi r ds of node q's function (node
+        // basis, either order): the consistent nodal force of a uniform traction. At order 1
+        // it keeps a spring at an axis vertex, where 2 pi r_q w_q would vanish; at order 2 it
+        // is Simpson's 2 pi r_q w_q on a straight segment, zero at an axis vertex, as the
+        // consistent force there is (docs/elements.md, quadratic interfaces in axisymmetry).
         if (in.nodal_integration) {
           const ReferenceElement &ge = elements_[cell.gauss_element];
           double lumped = 0.0;

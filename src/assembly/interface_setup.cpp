@@ -126,10 +126,6 @@ PetscErrorCode InterfaceAssembly::setup(DM dm, const Scene &scene, InitialStress
     DMPolytopeType ft;
     PetscCall(DMPlexGetCellType(dm, face1, &ft));
     const int order = scene.displacement_order;
-    // Axisymmetric rings of quadratic faces (their lumped nodal weights) are not verified.
-    if (order > 1 && scene.axisymmetric && error.empty())
-      error = "interface '" + in.name + "': -axisymmetric interfaces are not available yet at " +
-              "-displacement_order 2 (use -displacement_order 1)";
     if (order > 1 && in.nodal_integration && ft == DM_POLYTOPE_TRIANGLE && error.empty())
       error = "-interface_" + in.name + "_integration nodal: at -displacement_order 2 the " +
               "nodal rule of a triangular face (6 nodes of P2) gives its vertices zero weight, " +

@@ -43,28 +43,10 @@ PetscErrorCode lateralEdgesOnBoundary(DM dm, const std::string &boundary,
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode checkElementOrder(MPI_Comm comm, const Scene &scene)
-{
-  PetscFunctionBeginUser;
-  if (scene.displacement_order == 1) PetscFunctionReturn(0);
-  std::string what;
-  // Quadratic cohesive cells have not been verified in axisymmetry (the ring weights of the
-  // interface element at order 2): refused until they are.
-  if (scene.axisymmetric && !scene.interfaces.empty())
-    what = "interfaces in an axisymmetric scene (-axisymmetric with -interfaces)";
-  PetscCheck(what.empty(), comm, PETSC_ERR_USER_INPUT,
-             "-displacement_order %d: not available yet with %s; order 2 supports plane-strain, "
-             "axisymmetric and 3D scenes of elastic, Biot and Mohr-Coulomb regions with probes, "
-             "and interfaces in plane-strain and 3D scenes (use -displacement_order 1)",
-             scene.displacement_order, what.c_str());
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode markLayoutLabels(DM dm, const Scene &scene)
 {
   DMLabel cellSets, faceSets, porous;
   PetscFunctionBeginUser;
-  PetscCall(checkElementOrder(PetscObjectComm((PetscObject)dm), scene));
   PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
   PetscCall(DMGetLabel(dm, "Face Sets", &faceSets));
   PetscCall(DMCreateLabel(dm, kPorousLabel));

@@ -2,7 +2,7 @@
 must pass, on the scenes options/caisson_*.opts as they are, coarsened from the command line.
 
     caisson.py --case axisym_drained | axisym_partially_drained | quarter_partially_drained |
-                      quarter_vs_axisym  [--ranks 2] [--factor F] [--plot]
+                      quarter_vs_axisym  [--ranks 2] [--factor F] [--order 2] [--plot]
 
 Resistances are reported as the vertical force of the caisson on the soil (the soil-side
 interface force of timeseries.csv, positive when it holds the caisson down); Delta is the change
@@ -47,6 +47,9 @@ skirt or 1.5 m below its tip), the run ending at -ts_max_time after its cut-back
 iterations within the recorded counts (deterministic for a mesh and number of ranks).
 
 --plot also runs scripts/plot_caisson on the outputs (must exit 0 and write its figures).
+--order 2 (axisym_drained, axisym_partially_drained): -displacement_order 2, quadratic bodies
+and interfaces; the same checks (the equilibrium and the drained plateau weigh the interface's
+points with their ring weights, the storage rate integrates p3's balance over the lid).
 """
 import argparse
 import os
@@ -221,12 +224,19 @@ def plot(chk, run, figures, stages=0):
                   f"({drawn} mm; at least {stages})", 0, 0, ok=len(before) >= stages)
 
 
+def order_options(args):
+    """The output-name suffix and options of --order."""
+    return (f"_order{args.order}", ["-displacement_order", args.order]) if args.order > 1 else ("", [])
+
+
 def case_axisym_drained(args):
-    chk = common.Checks(f"caisson, axisymmetric, drained (mesh factor {args.factor}, {args.ranks} ranks)")
+    suffix, order = order_options(args)
+    chk = common.Checks(f"caisson, axisymmetric, drained (mesh factor {args.factor}, {args.ranks} ranks"
+                        f"{', order ' + str(args.order) if suffix else ''})")
     # 0.1 mm per step to 2 mm; the scene's own output intervals: fields every 6 steps,
     # interfaces every step (the default of -output_interfaces_every, for the mobilisation)
-    run = Run(scene("caisson_axisym_drained.opts"), "caisson_axisym_drained",
-              ["-mesh_size_factor", args.factor, "-ts_dt", 6, "-ts_max_time", 120, "-ts_max_steps", 20],
+    run = Run(scene("caisson_axisym_drained.opts"), "caisson_axisym_drained" + suffix,
+              ["-mesh_size_factor", args.factor, "-ts_dt", 6, "-ts_max_time", 120, "-ts_max_steps", 20] + order,
               args.ranks)
     ts = run.ts
     chk.check("cut-backs", float(ts["rejected"].sum()), 0)
@@ -254,9 +264,13 @@ def drained_plateau(chk, run):
     ts = run.ts
     ifc = run.interfaces()
     Fext = run.F("outer_skirt")
+    area = np.sum(ifc.point_fields[0]['weight'][run.outer])
     print(f"  outer skirt: initial vertical force F_ext(0) = {Fext[0]:.4g} N (no initial shear), "
-          f"{int(run.outer.sum())} points, sum of weights {np.sum(ifc.point_fields[0]['weight'][run.outer]):.3f} m2 "
+          f"{int(run.outer.sum())} points, sum of weights {area:.3f} m2 "
           f"(2 pi R_o L = {2 * np.pi * R_OUT * SKIRT:.3f})")
+    # The ring weights of the points add up to the skirt's area (any rule, either order).
+    chk.check("outer skirt: |sum of the points' weights - 2 pi R_o L| / (2 pi R_o L)",
+              abs(area - 2 * np.pi * R_OUT * SKIRT) / (2 * np.pi * R_OUT * SKIRT), 1e-9)
     rels, last = [], None
     for k, t in enumerate(ifc.times):
         pf = ifc.point_fields[k]
@@ -344,12 +358,14 @@ def case_axisym_drained_mohr_coulomb(args):
 
 def case_partially_drained(args, quarter):
     model = "3D quarter" if quarter else "axisymmetric"
-    chk = common.Checks(f"caisson, {model}, partially drained (mesh factor {args.factor}, {args.ranks} ranks)")
+    suffix, order = order_options(args)
+    chk = common.Checks(f"caisson, {model}, partially drained (mesh factor {args.factor}, {args.ranks} ranks"
+                        f"{', order ' + str(args.order) if suffix else ''})")
     name = "caisson_partially_drained.opts" if quarter else "caisson_axisym_partially_drained.opts"
     # 0.2 mm per step to 3 mm
-    run = Run(scene(name), name[:-5],
+    run = Run(scene(name), name[:-5] + suffix,
               ["-mesh_size_factor", args.factor, "-ts_dt", 12, "-ts_max_time", 180, "-ts_max_steps", 15,
-               "-output_fields_every", 5], args.ranks)
+               "-output_fields_every", 5] + order, args.ranks)
     ts = run.ts
     chk.check("cut-backs", float(ts["rejected"].sum()), 0)
     if quarter and common.SOLVER == "fieldsplit":
@@ -432,7 +448,11 @@ def main():
     ap.add_argument("--ranks", type=int, default=2)
     ap.add_argument("--factor", type=float, default=2.0, help="-mesh_size_factor (coarsening)")
     ap.add_argument("--plot", action="store_true", help="also run scripts/plot_caisson on the output")
+    ap.add_argument("--order", type=int, choices=(1, 2), default=1,
+                    help="-displacement_order (axisym_drained, axisym_partially_drained)")
     args = ap.parse_args()
+    if args.order > 1 and args.case not in ("axisym_drained", "axisym_partially_drained"):
+        common.fail(f"--order {args.order}: only the cases axisym_drained and axisym_partially_drained")
     {"axisym_drained": case_axisym_drained,
      "axisym_partially_drained": lambda a: case_partially_drained(a, False),
      "quarter_partially_drained": lambda a: case_partially_drained(a, True),

@@ -1,6 +1,6 @@
 """Storage of a gap opened at a known rate (docs/verification.md, interface flow).
 
-    gap_storage.py [--ranks N] [--order 2]
+    gap_storage.py [--ranks N] [--order 2] [--axisymmetric]
 
 Scene tests/hydraulics/gap_storage_2d.opts: a near-rigid (E = 1e15 Pa) porous base
 [0,1] x [0,0.5] drained at its bottom (p = 0), a near-rigid elastic block on it pulled up at
@@ -21,6 +21,10 @@ Checks:
     opening (1.4e-6 relative): that step is checked against v to 1e-5 only;
   * from step 2: bottom inflow = v A, p1 (probe 1e-9 m below the interface) and p3 (interface
     output) against the closed forms, contact force = -p3 A: 1e-8.
+
+--axisymmetric: the same mesh as a solid cylinder of radius 1 m (x = r; nu = 0 and ux = 0 at
+top and bottom keep u_r = 0, no hoop strain): the same state, every flow and force for the full
+circle, A = pi (the ring weights 2 pi r of the interface's storage, exchange and p3 force).
 """
 import argparse
 import os
@@ -42,21 +46,27 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--order", type=int, choices=(1, 2), default=1)
+    ap.add_argument("--axisymmetric", action="store_true",
+                    help="the mesh as a solid cylinder (x = r): full-circle flows, A = pi")
     args = ap.parse_args()
     order = f"_order{args.order}" if args.order > 1 else ""
-    out = common.output_dir(f"hydraulics_gap_storage{order}_np{args.ranks}")
+    axi = "_axi" if args.axisymmetric else ""
+    out = common.output_dir(f"hydraulics_gap_storage{axi}{order}_np{args.ranks}")
     probe = ["-probe_below", f"0.5,{H1 - 1e-9}"] if args.order == 1 else []
     extra = probe + (["-displacement_order", args.order] if args.order > 1 else [])
+    extra += ["-axisymmetric"] if args.axisymmetric else []
     common.run(scene("gap_storage_2d.opts"), out, extra, ranks=args.ranks)
     ts = common.read_timeseries(out)
-    chk = common.Checks(f"storage of a gap opened at v = {V:g} m/s{order}, {args.ranks} rank(s)")
-    vA = V * AREA
+    chk = common.Checks(f"storage of a gap opened at v = {V:g} m/s{order}"
+                        f"{', axisymmetric' if args.axisymmetric else ''}, {args.ranks} rank(s)")
+    area = AREA * (np.pi if args.axisymmetric else 1.0)
+    vA = V * area
     rate, f1, dt = ts["contact.storage_rate"], ts["contact.flux1"], ts["dt"]
     storage = np.r_[ts["contact.storage"][0] - dt[0] * rate[0], ts["contact.storage"]]
     p1 = -V * H1 / KP
     p3 = p1 - V / T1
     print(f"  closed forms: dh/dt = {V:g} m/s, p1 = {p1:g} Pa, p3 = {p3:g} Pa; steps {len(dt)}, "
-          f"storage {storage[0]:.6e} -> {storage[-1]:.6e} m3 per m")
+          f"storage {storage[0]:.6e} -> {storage[-1]:.6e} m3{'' if args.axisymmetric else ' per m'}")
     for k in range(len(dt)):
         below = f", below.p {ts['below.p'][k]:.6f}" if probe else ""
         print(f"  t {ts['time'][k]:5.1f}: storage_rate {rate[k]:.10e}, flux1 {f1[k]:.10e}, "
@@ -65,9 +75,9 @@ def main():
     chk.check("every step: max |storage_rate - flux1| / (vA)", np.max(np.abs(rate - f1)) / vA, 1e-10)
     chk.check("every step: max |storage_rate - d(storage)/dt| / (vA)",
               np.max(np.abs(rate - np.diff(storage) / dt)) / vA, 1e-8)
-    chk.check("step 1: |dh/dt - v| / v (bodies take p3 H/E)", abs(rate[0] / AREA - V) / V, 1e-5)
+    chk.check("step 1: |dh/dt - v| / v (bodies take p3 H/E)", abs(rate[0] / area - V) / V, 1e-5)
     later = slice(1, None)
-    chk.check("steps >= 2: max |dh/dt - v| / v", np.max(np.abs(rate[later] / AREA - V)) / V, 1e-8)
+    chk.check("steps >= 2: max |dh/dt - v| / v", np.max(np.abs(rate[later] / area - V)) / V, 1e-8)
     chk.check("steps >= 2: max |flux1 - vA| / (vA)", np.max(np.abs(f1[later] - vA)) / vA, 1e-8)
     chk.check("steps >= 2: max |-bottom.flux - vA| / (vA)",
               np.max(np.abs(-ts["bottom.flux"][later] - vA)) / vA, 1e-8)
@@ -75,7 +85,7 @@ def main():
         chk.check("steps >= 2: max |p1 - (-v H1/k')| / |p3|",
                   np.max(np.abs(ts["below.p"][later] - p1)) / abs(p3), 1e-8)
     chk.check("steps >= 2: max |contact.Fy - (-p3 A)| / |p3 A|",
-              np.max(np.abs(ts["contact.Fy"][later] + p3 * AREA)) / abs(p3 * AREA), 1e-8)
+              np.max(np.abs(ts["contact.Fy"][later] + p3 * area)) / abs(p3 * area), 1e-8)
     ifc = interface_points(out)
     worst = max(np.max(np.abs(f["interface_pressure"] - p3)) for f in ifc.point_fields[2:])
     chk.check("steps >= 2: max |p3 - (p1 - v/T1)| / |p3| (interface output)", worst / abs(p3), 1e-8)

@@ -8,6 +8,9 @@ soft to very stiff: K_N h / E = 1e-2, 1, 1e2, 1e4 (h = 0.125 m, the element size
 where Gauss integration of stiff interfaces is known to oscillate on distorted states.
 In 3D (patch_3d.opts) the element size is 0.25 m. --order 2: quadratic bodies and interfaces
 (-displacement_order 2; on tetrahedra Gauss only, triangular faces have no nodal rule there).
+--axisymmetric: the 2D mesh as a solid cylinder (x = r, the left sides on the axis): the same
+uniform state, and the interface force q pi R^2 (R = 1 m) checks the ring weights 2 pi r (at
+order 2 also the lumped nodal weights of the 3-node segments). --ratios: a subset of K_N h / E.
 Reads the per-integration-point interface output (tests/support/interface_reader.py).
 """
 import argparse
@@ -49,6 +52,8 @@ def main():
                     help="2D mesh as an axisymmetric solid cylinder (x = r): interface force q pi R^2")
     ap.add_argument("--order", type=int, choices=(1, 2), default=1,
                     help="-displacement_order (2: quadratic bodies and interfaces)")
+    ap.add_argument("--ratios", default="1e-2,1,1e2,1e4",
+                    help="the values of K_N h / E, comma-separated (default: all four)")
     ap.add_argument("--parts", action="store_true",
                     help="the contact in two named parts: forces per part and their sum")
     args = ap.parse_args()
@@ -63,7 +68,7 @@ def main():
     # At order 2 a triangular face has no nodal rule (its vertices would weigh nothing).
     rules = ("gauss",) if args.order == 2 and triangles and args.dim == 3 else ("gauss", "nodal")
     for rule in rules:
-        for ratio in (1e-2, 1.0, 1e2, 1e4):
+        for ratio in (float(r) for r in args.ratios.split(",")):
             kn = ratio * E / (0.125 if args.dim == 2 else 0.25)
             # the mesh in the name: ctest runs the same case on other meshes in parallel
             mesh = os.path.splitext(os.path.basename(args.mesh))[0] if args.mesh else "default"

@@ -36,6 +36,7 @@ struct QuadCase {
   bool flow = false;
   double rate_factor = 1.0;         ///< a: dx/dt = a (x - x_prev) / dt (flow cases)
   const char *dilation_angle = "0"; ///< psi [deg]
+  bool axisymmetric = false;        ///< x = r: ring weights 2 pi r (the left side is the axis)
 };
 
 PetscErrorCode setOption(const char *name, const std::string &value)
@@ -62,6 +63,7 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
   PetscCall(setOption("-mesh", src + "/meshes/" + c.mesh));
   PetscCall(setOption("-displacement_order", "2"));
   PetscCall(setOption("-regions", "base,block"));
+  if (c.axisymmetric) PetscCall(setOption("-axisymmetric", "true"));
   for (const char *r : {"base", "block"}) {
     const std::string p = std::string("-region_") + r + "_";
     PetscCall(setOption((p + "material").c_str(), c.flow ? "biot" : "elastic"));
@@ -345,7 +347,80 @@ INSTANTIATE_TEST_SUITE_P(
                  "10"},
         QuadCase{"flow_open3d", "block_on_base_3d.geo", 12.0, "gauss", {0, 0, 2e-6}, -1, true},
         QuadCase{
-            "flow_open3d_tet", "block_on_base_3d_tet.geo", 12.0, "gauss", {0, 0, 2e-6}, -1, true}),
+            "flow_open3d_tet", "block_on_base_3d_tet.geo", 12.0, "gauss", {0, 0, 2e-6}, -1, true},
+        // Axisymmetric (x = r, the block's and the base's left sides on the axis): the same
+        // terms with the ring weights 2 pi r, Gauss points and the lumped nodal weights (the
+        // axis vertex's is zero at order 2). Stick, slip, open; flow open and sliding.
+        QuadCase{"axi_stick_gauss",
+                 "block_on_base_2d.geo",
+                 2.0,
+                 "gauss",
+                 {1e-7, -1e-6, 0},
+                 (int)S::stick,
+                 false,
+                 1.0,
+                 "0",
+                 true},
+        QuadCase{"axi_slip_nodal",
+                 "block_on_base_2d.geo",
+                 2.0,
+                 "nodal",
+                 {-1e-5, -1e-6, 0},
+                 (int)S::slip,
+                 false,
+                 1.0,
+                 "0",
+                 true},
+        QuadCase{"axi_slip_tri_gauss_dilatant",
+                 "block_on_base_2d_tri.geo",
+                 2.0,
+                 "gauss",
+                 {1e-5, -1e-6, 0},
+                 (int)S::slip,
+                 false,
+                 1.0,
+                 "10",
+                 true},
+        QuadCase{"axi_open_nodal",
+                 "block_on_base_2d.geo",
+                 2.0,
+                 "nodal",
+                 {1e-5, 1e-6, 0},
+                 (int)S::open,
+                 false,
+                 1.0,
+                 "0",
+                 true},
+        QuadCase{"axi_flow_open_bdf2_nodal",
+                 "block_on_base_2d.geo",
+                 2.0,
+                 "nodal",
+                 {0, 2e-6, 0},
+                 -1,
+                 true,
+                 1.5,
+                 "0",
+                 true},
+        QuadCase{"axi_flow_sliding_dilatant",
+                 "block_on_base_2d.geo",
+                 2.0,
+                 "gauss",
+                 {1e-5, -2e-6, 0},
+                 (int)S::slip,
+                 true,
+                 1.0,
+                 "10",
+                 true},
+        QuadCase{"axi_flow_closed_nodal",
+                 "block_on_base_2d.geo",
+                 2.0,
+                 "nodal",
+                 {1e-7, -2e-6, 0},
+                 (int)S::stick,
+                 true,
+                 1.0,
+                 "0",
+                 true}),
     [](const auto &info) { return std::string(info.param.name); });
 
 // Patch test of the kinematics: each body is given a quadratic displacement field at every
