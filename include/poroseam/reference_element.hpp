@@ -82,12 +82,20 @@ struct PointGeometry {
 
 /// Maps quadrature point q of `element` to the physical cell with vertex coordinates
 /// `coords` (num_vertices x dim). Returns det J; a non-positive value means an inverted cell.
+/// `curved`: the cell is isoparametric, `coords` holds its nodes' places (num_nodes x dim, the
+/// node basis maps it; -mesh_geometry_order 2).
 double mapQuadraturePoint(const ReferenceElement &element, const double *coords, int q,
-                          PointGeometry &g);
+                          PointGeometry &g, bool curved = false);
 
 /// Measure of quadrature point q of a face element (dim - 1) embedded in space of dimension
-/// `space`: the quadrature weight times the surface Jacobian.
-double surfaceWeight(const ReferenceElement &face, const double *coords, int space, int q);
+/// `space`: the quadrature weight times the surface Jacobian (`curved`: coords are the nodes').
+double surfaceWeight(const ReferenceElement &face, const double *coords, int space, int q,
+                     bool curved = false);
+
+/// Unit normal of a face element at its point q, on the side of `side` (a normal of the face,
+/// e.g. faceNormal's): the curved face's own normal where it is curved.
+void surfaceNormal(const ReferenceElement &face, const double *coords, int space, int q,
+                   bool curved, const double side[3], double n[3]);
 
 /// Normal of a face from the order of its vertices (not normalised; Newell's method in 3D,
 /// so warped quadrilaterals get their mean normal). coords: nv x space.

@@ -9,9 +9,11 @@
 #include "poroseam/biot.hpp"
 #include "poroseam/closure_cache.hpp"
 #include "poroseam/collective_check.hpp"
+#include "poroseam/curved_nodes.hpp"
 #include "poroseam/elastic.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
+#include "poroseam/mesh_points.hpp"
 
 #include <cmath>
 #include <petscsf.h>
@@ -273,6 +275,8 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
       points.push_back(cell.cell);
     PetscCall(closures_.setup(dm, points));
   }
+  node_places_.clear();
+  if (curvedNodes(dm)) PetscCall(displacementNodePlaces(dm, node_places_));
   if (any_skeleton_history_) PetscCall(checkInitialYield(comm));
   {
     double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
