@@ -36,6 +36,7 @@ struct QuadCase {
   bool flow = false;
   double rate_factor = 1.0;         ///< a: dx/dt = a (x - x_prev) / dt (flow cases)
   const char *dilation_angle = "0"; ///< psi [deg]
+  const char *geometry_order = "1";  ///< -mesh_geometry_order (2: curved faces and cells)
 };
 
 PetscErrorCode setOption(const char *name, const std::string &value)
@@ -61,6 +62,7 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
   const std::string src = POROSEAM_SOURCE_DIR;
   PetscCall(setOption("-mesh", src + "/meshes/" + c.mesh));
   PetscCall(setOption("-displacement_order", "2"));
+  PetscCall(setOption("-mesh_geometry_order", c.geometry_order));
   PetscCall(setOption("-regions", "base,block"));
   for (const char *r : {"base", "block"}) {
     const std::string p = std::string("-region_") + r + "_";
@@ -89,7 +91,7 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
   PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
   PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
                          testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
-                         &names, &dim));
+                         &names, &dim, scene.mesh_geometry_order));
   PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
   res->dim = dim;
   PetscCall(splitInterfaces(&dm, scene));
@@ -345,7 +347,29 @@ INSTANTIATE_TEST_SUITE_P(
                  "10"},
         QuadCase{"flow_open3d", "block_on_base_3d.geo", 12.0, "gauss", {0, 0, 2e-6}, -1, true},
         QuadCase{
-            "flow_open3d_tet", "block_on_base_3d_tet.geo", 12.0, "gauss", {0, 0, 2e-6}, -1, true}),
+            "flow_open3d_tet", "block_on_base_3d_tet.geo", 12.0, "gauss", {0, 0, 2e-6}, -1, true},
+        // Curved faces (-mesh_geometry_order 2): the contact is a circular arc, each point with
+        // its own frame; sliding (nodal rule) and open with flow.
+        QuadCase{"slip2d_curved_nodal",
+                 "block_on_arc_2d.geo",
+                 2.0,
+                 "nodal",
+                 {2.5e-5, -1e-5, 0},
+                 (int)S::slip,
+                 false,
+                 1.0,
+                 "0",
+                 "2"},
+        QuadCase{"flow_open2d_curved",
+                 "block_on_arc_2d.geo",
+                 2.0,
+                 "gauss",
+                 {0, 2e-6, 0},
+                 (int)S::open,
+                 true,
+                 1.0,
+                 "0",
+                 "2"}),
     [](const auto &info) { return std::string(info.param.name); });
 
 // Patch test of the kinematics: each body is given a quadratic displacement field at every
