@@ -102,8 +102,9 @@ void surfaceNormal(const ReferenceElement &face, const double *coords, int space
 void faceNormal(const double *coords, int nv, int space, double n[3]);
 
 /// Inverse map: reference coordinates of physical point x (Newton, exact for affine cells).
-/// Returns true when x lies inside the cell (with a small tolerance).
+/// Returns true when x lies inside the cell (with a small tolerance). `curved`: coords are the
+/// nodes' places and the node basis maps the cell.
 bool locatePoint(const ReferenceElement &element, const double *coords, const double x[],
-                 double xi[]);
+                 double xi[], bool curved = false);
 
 } // namespace poroseam

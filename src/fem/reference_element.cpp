@@ -619,22 +619,28 @@ double mapQuadraturePoint(const ReferenceElement &e, const double *coords, int q
   return det;
 }
 
-bool locatePoint(const ReferenceElement &e, const double *coords, const double x[], double xi[])
+bool locatePoint(const ReferenceElement &e, const double *coords, const double x[], double xi[],
+                 bool curved)
 {
   const int dim = e.dim, nv = e.num_vertices;
+  // The map: vertex basis (straight-sided) or node basis (curved: coords are the nodes').
+  const int ng = curved ? e.num_nodes : nv;
   // Start at the reference centroid, Newton on x(xi) = x (one step for affine cells).
   for (int k = 0; k < dim; ++k) {
     xi[k] = 0.0;
     for (int a = 0; a < nv; ++a)
       xi[k] += e.vertex_coords[a * dim + k] / nv;
   }
-  std::vector<double> phi_(nv), dphi_(nv * dim);
+  std::vector<double> phi_(std::max(nv, ng)), dphi_(std::max(nv, ng) * dim);
   double *phi = phi_.data(), *dphi = dphi_.data();
   for (int it = 0; it < 20; ++it) {
-    e.evaluate(xi, phi, dphi);
+    if (curved)
+      e.evaluateNodes(xi, phi, dphi);
+    else
+      e.evaluate(xi, phi, dphi);
     double J[3][3], invJ[3][3], r[3] = {0, 0, 0};
-    jacobian(dim, nv, coords, dphi, J, invJ);
-    for (int a = 0; a < nv; ++a)
+    jacobian(dim, ng, coords, dphi, J, invJ);
+    for (int a = 0; a < ng; ++a)
       for (int k = 0; k < dim; ++k)
         r[k] += phi[a] * coords[a * dim + k];
     double step = 0.0;
