@@ -276,7 +276,32 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     PetscCall(closures_.setup(dm, points));
   }
   node_places_.clear();
-  if (curvedNodes(dm)) PetscCall(displacementNodePlaces(dm, node_places_));
+  if (curvedNodes(dm)) {
+    PetscCall(displacementNodePlaces(dm, node_places_));
+    // A curved cell can fold where its straight-sided one does not (a coarse cell on a tight
+    // curve): its Jacobian must stay positive at every integration point.
+    const PetscScalar *ca;
+    std::vector<double> xg;
+    PetscCall(VecGetArrayRead(coords, &ca));
+    for (size_t i = 0; i < cells_.size() && error.empty(); ++i) {
+      const ReferenceElement &e = elements_[cells_[i].element];
+      cellGeometry(i, ca, xg);
+      for (int q = 0; q < e.num_quadrature; ++q) {
+        if (mapQuadraturePoint(e, xg.data(), q, g, true) > 0.0) continue;
+        std::ostringstream msg;
+        msg << "-mesh_geometry_order 2: the curved " << DMPolytopeTypes[e.type] << " cell "
+            << cells_[i].cell << " near (" << g.x[0] << ", " << g.x[1] << ", "
+            << (dim_ == 3 ? g.x[2] : 0.0)
+            << ") folds (non-positive Jacobian determinant at an integration point): its "
+               "cells are too coarse for the curve; refine the mesh there, or use "
+               "-mesh_geometry_order 1";
+        error = msg.str();
+        break;
+      }
+    }
+    PetscCall(VecRestoreArrayRead(coords, &ca));
+    PetscCall(checkOnAllRanks(comm, error));
+  }
   if (any_skeleton_history_) PetscCall(checkInitialYield(comm));
   {
     double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
