@@ -27,8 +27,6 @@ public:
   const std::vector<double> &packed() const { return entries_; }
   void setPacked(std::vector<double> entries) { entries_ = std::move(entries); }
   double tolerance() const { return tolerance_; }
-  /// Largest distance between a node and its straight-sided place (how curved the mesh is).
-  double largestOffset() const;
 
   static constexpr int kStride = 7;
 

@@ -78,18 +78,6 @@ bool CurvedNodes::find(int corners, const double straight[3], double curved[3]) 
   return false;
 }
 
-double CurvedNodes::largestOffset() const
-{
-  double largest = 0.0;
-  for (size_t i = 0; i < size(); ++i) {
-    const double *e = &entries_[i * kStride];
-    largest = std::max(largest, std::sqrt((e[4] - e[1]) * (e[4] - e[1]) +
-                                          (e[5] - e[2]) * (e[5] - e[2]) +
-                                          (e[6] - e[3]) * (e[6] - e[3])));
-  }
-  return largest;
-}
-
 PetscErrorCode readGmshFile(MPI_Comm comm, const char *msh, bool high_order, DM *dm)
 {
   // PETSc 3.18's reader takes the choice from the options database only; it is set for this
@@ -136,8 +124,8 @@ PetscErrorCode attachCurvedNodes(MPI_Comm comm, const char *msh, DM linear)
     PetscCall(VecGetArrayRead(lx, &l));
     // The same file through the same reader: the same points. Checked on the vertices.
     if (pStart != qStart || pEnd != qEnd)
-      PetscCall(PetscSNPrintf(error, sizeof error, "the high-order read of %s has other points",
-                              msh));
+      PetscCall(
+          PetscSNPrintf(error, sizeof error, "the high-order read of %s has other points", msh));
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     for (PetscInt v = vStart; v < vEnd && !error[0]; ++v) {
       PetscInt ho, lo_off, hd;
@@ -147,8 +135,8 @@ PetscErrorCode attachCurvedNodes(MPI_Comm comm, const char *msh, DM linear)
       for (PetscInt d = 0; d < cdim; ++d) {
         const double a = PetscRealPart(h[ho + d]), b = PetscRealPart(l[lo_off + d]);
         if (hd != cdim || a != b)
-          PetscCall(PetscSNPrintf(error, sizeof error,
-                                  "the high-order read of %s moved vertex %d", msh, (int)v));
+          PetscCall(PetscSNPrintf(error, sizeof error, "the high-order read of %s moved vertex %d",
+                                  msh, (int)v));
         lo[d] = v == vStart ? b : std::min(lo[d], b);
         hi[d] = v == vStart ? b : std::max(hi[d], b);
       }
@@ -228,7 +216,8 @@ PetscErrorCode keepCurvedNodes(DM from, DM to)
   PetscContainer container = nullptr;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectQuery((PetscObject)from, kCurvedNodes, (PetscObject *)&container));
-  if (container) PetscCall(PetscObjectCompose((PetscObject)to, kCurvedNodes, (PetscObject)container));
+  if (container)
+    PetscCall(PetscObjectCompose((PetscObject)to, kCurvedNodes, (PetscObject)container));
   PetscFunctionReturn(0);
 }
 
