@@ -292,9 +292,9 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
         msg << "-mesh_geometry_order 2: the curved " << DMPolytopeTypes[e.type] << " cell "
             << cells_[i].cell << " near (" << g.x[0] << ", " << g.x[1] << ", "
             << (dim_ == 3 ? g.x[2] : 0.0)
-            << ") folds (non-positive Jacobian determinant at an integration point): its "
-               "cells are too coarse for the curve; refine the mesh there, or use "
-               "-mesh_geometry_order 1";
+            << ") folds (non-positive Jacobian determinant at an integration point): the "
+               "cell is too coarse for its curve, or its second-order nodes are misplaced; "
+               "refine the mesh there, or use -mesh_geometry_order 1";
         error = msg.str();
         break;
       }

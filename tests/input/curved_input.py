@@ -7,7 +7,8 @@ exit, no crash, no hang), and good curved runs (1 and 2 ranks).
     curved_input.py --list           the case names
 
 tests/input/meshes/terzaghi_column_2d_order{1,2}.msh: meshes/terzaghi_column_2d.geo meshed by
-gmsh 4.8 with -order 1 and -order 2 at -clscale 4.
+gmsh 4.8 with -order 1 and -order 2 at -clscale 4; ..._order2_folded.msh: the order-2 mesh with
+the node of the first quadrangle's first edge moved 2.5 times across the cell's centre.
 """
 
 import os
@@ -33,6 +34,10 @@ CASES = {
     "first_order_msh_curved": dict(
         args=["-mesh", ORDER1_MSH] + CURVED,
         expect=["-mesh_geometry_order 2", "terzaghi_column_2d_order1.msh", "first-order"]),
+    # the same mesh with one edge node moved across its cell: the curved cell folds
+    "curved_cell_folds": dict(
+        args=["-mesh", ORDER2_MSH.replace(".msh", "_folded.msh")] + CURVED,
+        expect=["-mesh_geometry_order 2", "quadrilateral cell", "folds", "misplaced"]),
     "curved_msh_runs": dict(args=["-mesh", ORDER2_MSH, "-ts_max_time", "0.4"] + CURVED,
                             ok=True, expect=["results in"]),
     "curved_msh_runs_np2": dict(args=["-mesh", ORDER2_MSH, "-ts_max_time", "0.4"] + CURVED, ok=True,
