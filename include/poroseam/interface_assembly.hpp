@@ -121,9 +121,27 @@ private:
   std::vector<ReferenceElement> elements_;
   std::vector<Cell> cells_;
   ClosureCache closures_; ///< of cells_, same order
+  /// Curved faces (-mesh_geometry_order 2): side 1's node places of every cell (num_nodes x
+  /// dim from cell index i * stride_), and the local frame of every integration point (the
+  /// curved face's normal there and the cell's tangents turned onto it; 9 per history
+  /// entry). Empty for straight faces, whose frame is the cell's.
+  std::vector<double> places_, point_frames_;
+  size_t places_stride_ = 0;
+  /// The local frame of integration point h of `cell`.
+  const double (*frameOf(const Cell &cell, size_t h) const)[3]
+  {
+    return point_frames_.empty() ? cell.frame
+                                 : reinterpret_cast<const double(*)[3]>(&point_frames_[h * 9]);
+  }
+  /// Initial contact state of a point at x with frame `frame`, appended to initial_ and
+  /// committed_ (or written at entry h when h < initial_.size()).
+  void initialContact(const Interface &in, const double x[3], const double frame[3][3],
+                      bool pore_water, size_t h);
+  PetscErrorCode setupCurved(DM dm);
   std::vector<physics::ContactInitial> initial_;
   std::vector<physics::ContactHistory> committed_;
   InitialPressure initial_pressure_;
+  InitialStress initial_stress_;
 };
 
 } // namespace poroseam

@@ -11,10 +11,12 @@ namespace poroseam {
 /// Reads a Gmsh mesh (.msh, or .geo meshed with gmsh using the size factor) on rank 0 as an
 /// interpolated DMPlex, with labels "Cell Sets" and "Face Sets" holding the physical tags.
 /// `names` receives the physical names of the file (same on every rank); `dim` the mesh
-/// dimension. A `.geo` is meshed into `work_dir`.
+/// dimension. A `.geo` is meshed into `work_dir`. `geometry_order` 2 (-mesh_geometry_order):
+/// a .geo is meshed with gmsh -order 2, and the DM carries the table of the high-order nodes
+/// (curved_nodes.hpp); its coordinates stay on the vertices.
 PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_factor,
                             const std::string &work_dir, DM *dm, std::vector<PhysicalName> *names,
-                            int *dim);
+                            int *dim, int geometry_order = 1);
 
 /// Distributes the mesh and replaces *dm by the distributed one; labels travel with the
 /// points. The partitioner comes from -partitioner ptscotch|metis|simple (default ptscotch;

@@ -19,6 +19,7 @@ struct MshSummary {
   int dim = 0;         // largest dimension of an element
   long nodes = 0;
   long cells = 0; // elements of dimension `dim`
+  int order = 0;  // 1 linear elements, 2 second-order (gmsh -order 2); 0 none
   /// Each point element of a physical point group: (physical tag, coordinates). PETSc 3.18's
   /// reader keeps no label of them (loadGmshMesh marks their vertices, "Vertex Sets").
   std::vector<std::pair<long long, std::array<double, 3>>> points;

@@ -212,6 +212,12 @@ private:
   std::map<int, int> element_of_type_;
   std::vector<BulkCell> cells_;
   ClosureCache closures_; ///< of cells_, same order
+  /// Curved cells (-mesh_geometry_order 2): each displacement node's place at its dofs, in the
+  /// local vectors' layout (displacementNodePlaces); empty for straight-sided cells.
+  std::vector<double> node_places_;
+  /// The geometry of cell i into xc: its nodes' places (curved) or its vertices' coordinates
+  /// (from the local coordinate array `coords`); returns whether it is curved.
+  bool cellGeometry(size_t i, const PetscScalar *coords, std::vector<double> &xc) const;
   std::vector<LoadedFace> faces_;
   std::vector<ConstrainedDof> constrained_;
   InterfaceAssembly interfaces_;

@@ -82,20 +82,29 @@ struct PointGeometry {
 
 /// Maps quadrature point q of `element` to the physical cell with vertex coordinates
 /// `coords` (num_vertices x dim). Returns det J; a non-positive value means an inverted cell.
+/// `curved`: the cell is isoparametric, `coords` holds its nodes' places (num_nodes x dim, the
+/// node basis maps it; -mesh_geometry_order 2).
 double mapQuadraturePoint(const ReferenceElement &element, const double *coords, int q,
-                          PointGeometry &g);
+                          PointGeometry &g, bool curved = false);
 
 /// Measure of quadrature point q of a face element (dim - 1) embedded in space of dimension
-/// `space`: the quadrature weight times the surface Jacobian.
-double surfaceWeight(const ReferenceElement &face, const double *coords, int space, int q);
+/// `space`: the quadrature weight times the surface Jacobian (`curved`: coords are the nodes').
+double surfaceWeight(const ReferenceElement &face, const double *coords, int space, int q,
+                     bool curved = false);
+
+/// Unit normal of a face element at its point q, on the side of `side` (a normal of the face,
+/// e.g. faceNormal's): the curved face's own normal where it is curved.
+void surfaceNormal(const ReferenceElement &face, const double *coords, int space, int q,
+                   bool curved, const double side[3], double n[3]);
 
 /// Normal of a face from the order of its vertices (not normalised; Newell's method in 3D,
 /// so warped quadrilaterals get their mean normal). coords: nv x space.
 void faceNormal(const double *coords, int nv, int space, double n[3]);
 
 /// Inverse map: reference coordinates of physical point x (Newton, exact for affine cells).
-/// Returns true when x lies inside the cell (with a small tolerance).
+/// Returns true when x lies inside the cell (with a small tolerance). `curved`: coords are the
+/// nodes' places and the node basis maps the cell.
 bool locatePoint(const ReferenceElement &element, const double *coords, const double x[],
-                 double xi[]);
+                 double xi[], bool curved = false);
 
 } // namespace poroseam

@@ -118,6 +118,10 @@ struct Probe {
 struct Scene {
   std::string mesh_file;
   double mesh_size_factor = 1.0;
+  /// Order of the mesh geometry (-mesh_geometry_order): 1 straight-sided cells (the mesh's
+  /// vertices only); 2 second-order Gmsh cells, curved where gmsh put their edge, face and
+  /// cell nodes on a curved boundary (isoparametric with the order-2 displacement basis).
+  int mesh_geometry_order = 1;
   int dim = 0; ///< from the mesh
 
   std::vector<Region> regions;

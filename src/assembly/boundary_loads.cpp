@@ -174,8 +174,13 @@ PetscErrorCode Problem::addLoads(double t, double mass_scale, Vec f,
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
   PetscCall(DMGetCoordinateSection(dm_, &csec));
   if (totals) totals->assign(scene_->boundaries.size() * (dim_ + 1), 0.0);
+  // Curved faces (-mesh_geometry_order 2): their nodes' places, read like a closure.
+  Vec places = nullptr;
+  if (!node_places_.empty())
+    PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, (PetscInt)node_places_.size(),
+                                    node_places_.data(), &places));
   // Natural conditions: R_u -= int t . v, R_p += s int psi q_n.
-  std::vector<double> F;
+  std::vector<double> F, xg;
   for (const auto &face : faces_) {
     const bool water = face.condition == kWaterLoad;
     const BoundaryCondition *bc = water ? nullptr : &scene_->conditions[face.condition];
@@ -191,26 +196,36 @@ PetscErrorCode Problem::addLoads(double t, double mass_scale, Vec f,
     // Face closure: nn * dim displacements (node basis), then nv pressures (vertex basis).
     const int nv = e.num_vertices, nn = e.num_nodes, nu = nn * dim_;
     const int np = (int)n - nu;
+    // The geometry: the vertices (straight face) or the nodes (curved, isoparametric).
+    const bool curved = places != nullptr;
+    if (curved) {
+      PetscScalar *xp = nullptr;
+      PetscInt npl = 0;
+      PetscCall(DMPlexVecGetClosure(dm_, s, places, face.face, &npl, &xp));
+      xg.assign(xp, xp + nu);
+      PetscCall(DMPlexVecRestoreClosure(dm_, s, places, face.face, &npl, &xp));
+    } else
+      xg.assign(xc, xc + nc);
+    const int ng = curved ? nn : nv;
     for (int q = 0; q < e.num_quadrature; ++q) {
       const double *phi = &e.basis[q * nv], *N = &e.node_basis[q * nn];
-      double w = surfaceWeight(e, xc, dim_, q);
-      if (scene_->axisymmetric) {
-        double r = 0.0;
-        for (int a = 0; a < nv; ++a)
-          r += phi[a] * xc[a * dim_];
-        w *= 2.0 * M_PI * r;
-      }
+      const double *gphi = curved ? N : phi;
+      double w = surfaceWeight(e, xg.data(), dim_, q, curved);
+      double xq[3] = {0, 0, 0};
+      for (int a = 0; a < ng; ++a)
+        for (int d = 0; d < dim_; ++d)
+          xq[d] += gphi[a] * xg[a * dim_ + d];
+      // The normal at the point: the face's own (straight), or the curved face's there.
+      double normal[3] = {face.normal[0], face.normal[1], face.normal[2]};
+      if (curved) surfaceNormal(e, xg.data(), dim_, q, true, face.normal, normal);
+      if (scene_->axisymmetric) w *= 2.0 * M_PI * xq[0];
       if (water) {
         // The free water's pressure, t = -p_w n where the face is below the water level: a
         // permanent load like gravity (no time function), balanced by the geostatic state.
-        double xq[3] = {0, 0, 0};
-        for (int a = 0; a < nv; ++a)
-          for (int d = 0; d < dim_; ++d)
-            xq[d] += phi[a] * xc[a * dim_ + d];
         const double pw = std::max(0.0, initialPressure(xq));
         for (int a = 0; a < nn; ++a)
           for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] += w * N[a] * pw * face.normal[i];
+            F[a * dim_ + i] += w * N[a] * pw * normal[i];
         continue;
       }
       if (bc->kind == BcKind::traction)
@@ -220,7 +235,7 @@ PetscErrorCode Problem::addLoads(double t, double mass_scale, Vec f,
       else if (bc->kind == BcKind::normal_pressure) // t = -P n on the face's own normal
         for (int a = 0; a < nn; ++a)
           for (int i = 0; i < dim_; ++i)
-            F[a * dim_ + i] += w * N[a] * bc->value[0] * factor * face.normal[i];
+            F[a * dim_ + i] += w * N[a] * bc->value[0] * factor * normal[i];
       else if (bc->kind == BcKind::flux && np == nv)
         for (int a = 0; a < nv; ++a)
           F[nu + a] += mass_scale * w * phi[a] * bc->value[0] * factor;
@@ -238,6 +253,7 @@ PetscErrorCode Problem::addLoads(double t, double mass_scale, Vec f,
           total[dim_] += F[nu + a];
     }
   }
+  PetscCall(VecDestroy(&places));
   PetscFunctionReturn(0);
 }
 } // namespace poroseam

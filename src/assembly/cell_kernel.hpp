@@ -53,6 +53,9 @@ struct CellKernel {
   physics::SkeletonResponse *responses = nullptr;
   /// Work arrays kept across cells (optional: without, the kernel allocates its own).
   CellKernelWork *work = nullptr;
+  /// Curved cell (-mesh_geometry_order 2): coords are the nodes' places (nn x dim) and the
+  /// node basis maps the cell (isoparametric); otherwise the vertices' (nv x dim).
+  bool curved = false;
 
   template <class InitialStress, class InitialPressure>
   void operator()(const double *coords, const double *x, const double *xdot, int closure_size,
@@ -108,7 +111,7 @@ struct CellKernel {
     std::conditional_t<WithLaw, physics::SkeletonResponse, char> law_response;
     PointGeometry &g = wk.point;
     for (int q = 0; q < e.num_quadrature; ++q) {
-      mapQuadraturePoint(e, coords, q, g);
+      mapQuadraturePoint(e, coords, q, g, curved);
       const double *__restrict phi = g.phi; // vertex basis: pressure
       const double *__restrict dphi = g.grad_phi;
       const double *__restrict N = g.node_phi; // node basis: displacement

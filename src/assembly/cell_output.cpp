@@ -63,7 +63,7 @@ PetscErrorCode Problem::cellFields(Vec local, CellFields &out) const
   PetscCall(DMGetCoordinatesLocal(dm_, &coords));
   PetscCall(VecGetArrayRead(local, &ua));
   PetscCall(VecGetArrayRead(coords, &ca));
-  std::vector<double> x, xc;
+  std::vector<double> x, xc, xg;
   for (size_t i = 0; i < cells_.size(); ++i) {
     const BulkCell &cell = cells_[i];
     const CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
@@ -72,12 +72,13 @@ PetscErrorCode Problem::cellFields(Vec local, CellFields &out) const
     xc.resize(nc);
     gatherClosure(ua, closures_.local(i), n, x.data());
     gatherClosure(ca, closures_.coordinates(i), nc, xc.data());
+    const bool curved = cellGeometry(i, ca, xg); // the points' places; xc: the vertices'
     double eqps = 0.0; // plastic state (cells whose law has history)
     int state = 0;
     PetscCall(closureVertices(dm_, cell.cell, cellVertices));
     const CellStressState s = cellStressAverage(
         elements_[cell.element], dim_, scene_->axisymmetric, m, scene_->hasPressure() && m.porous,
-        xc.data(), x.data(),
+        xg.data(), x.data(),
         [&](int q, const double *xq, const double eps[3][3], double stress[3][3]) {
           double s0[3][3];
           initialStress(xq, cell.region, s0);
@@ -105,7 +106,8 @@ PetscErrorCode Problem::cellFields(Vec local, CellFields &out) const
           // The vertices of the closure are the element's vertices, in its order.
           for (size_t k = 0; k < cellVertices.size(); ++k)
             recovery.add(cellVertices[k], &xc[k * dim_], xq, cell.size, values);
-        });
+        },
+        curved);
     out.cells.push_back(cell.cell);
     if (plastic) {
       out.fields[3].values.push_back(eqps);

@@ -32,20 +32,21 @@ inline void skeletonStress(const CellMaterial &m, const double strain[3][3],
 /// mesh's own space: area in 2D, axisymmetric too; volume in 3D).
 ///   e, dim, axisymmetric: as CellKernel; m: the cell's material; with_pressure: the closure
 ///   holds the nv pressures after the nn * dim displacements (CellKernel::with_pressure)
-///   coords: vertex coordinates (nv x dim); x: the closure values (nn: the element's nodes)
+///   coords: vertex coordinates (nv x dim), or with `curved` the nodes' places (nn x dim);
+///   x: the closure values (nn: the element's nodes)
 ///   point_stress(q, xq, strain, stress): the effective stress at point q (position xq)
 ///   pressure0(xq): the pore pressure of a porous cell without pressure unknowns (drained)
 template <class PointStress, class InitialPressure, class Visit>
 void forEachStressPoint(const ReferenceElement &e, int dim, bool axisymmetric,
                         const CellMaterial &m, bool with_pressure, const double *coords,
                         const double *x, PointStress &&point_stress, InitialPressure &&pressure0,
-                        Visit &&visit)
+                        Visit &&visit, bool curved = false)
 {
   const int nv = e.num_vertices, nn = e.num_nodes, nu = nn * dim;
   const double alpha = m.porous ? m.biot.biot_coefficient : 0.0;
   PointGeometry g;
   for (int q = 0; q < e.num_quadrature; ++q) {
-    mapQuadraturePoint(e, coords, q, g);
+    mapQuadraturePoint(e, coords, q, g, curved);
     const double *phi = g.phi, *N = g.node_phi, *dN = g.grad_node_phi;
     // eps = sym(grad u), plus the hoop strain u_r / r when axisymmetric.
     double eps[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
@@ -81,7 +82,7 @@ template <class PointStress, class InitialPressure, class Visit>
 CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisymmetric,
                                   const CellMaterial &m, bool with_pressure, const double *coords,
                                   const double *x, PointStress &&point_stress,
-                                  InitialPressure &&pressure0, Visit &&visit)
+                                  InitialPressure &&pressure0, Visit &&visit, bool curved = false)
 {
   CellStressState out{};
   double measure = 0.0;
@@ -96,7 +97,8 @@ CellStressState cellStressAverage(const ReferenceElement &e, int dim, bool axisy
                          }
                        measure += w;
                        visit(q, xq, w, eps, stress, total);
-                     });
+                     },
+                     curved);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       out.effective_stress[i][j] /= measure;

@@ -65,15 +65,19 @@ namespace {
 
 /// Surface gradients grad_s phi_a = J (J^T J)^-1 grad_xi phi_a of a face element (dim - 1)
 /// in space `dim`, at quadrature point q.
-void surfaceGradients(const ReferenceElement &e, const double *x, int dim, int q, double g[4][3])
+void surfaceGradients(const ReferenceElement &e, const double *x, int dim, int q, double g[4][3],
+                      bool curved = false)
 {
   const int m = e.dim, nv = e.num_vertices;
   const double *dphi = &e.basis_derivatives[q * nv * m];
+  // The face's map: its vertices (straight), or its nodes (curved: x holds their places).
+  const int ng = curved ? e.num_nodes : nv;
+  const double *gdphi = curved ? &e.node_basis_derivatives[q * ng * m] : dphi;
   double J[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-  for (int a = 0; a < nv; ++a)
+  for (int a = 0; a < ng; ++a)
     for (int r = 0; r < dim; ++r)
       for (int k = 0; k < m; ++k)
-        J[r][k] += x[a * dim + r] * dphi[a * m + k];
+        J[r][k] += x[a * dim + r] * gdphi[a * m + k];
   double G[2][2] = {{0, 0}, {0, 0}}, Ginv[2][2];
   for (int k = 0; k < m; ++k)
     for (int l = 0; l < m; ++l)
@@ -138,10 +142,15 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         u1[a * dim_ + d] = u[cell.u1[cell.vertex_node[a]] + d];
         u2[a * dim_ + d] = u[cell.u2[cell.vertex_node[a]] + d];
       }
+    // Curved faces: side 1's node places map the face (isoparametric).
+    const bool curved = !places_.empty();
+    const double *xg = curved ? &places_[i * places_stride_] : x1.data();
     for (int q = 0; q < e.num_quadrature; ++q) {
-      // Vertex basis: geometry, pressures, p3. Node basis: displacements, the gap.
+      // Vertex basis: geometry (straight faces), pressures, p3. Node basis: displacements, the
+      // gap (and the geometry of curved faces).
       const double *phi = &e.basis[q * e.num_vertices];
       const double *N = &e.node_basis[q * e.num_nodes];
+      const double(*frame)[3] = frameOf(cell, cell.history + q);
       InterfacePointState st;
       FlowPoint fp;
       st.point = q;
@@ -151,7 +160,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
       st.face_displacement1 = u1.data();
       st.face_displacement2 = u2.data();
       st.phi = phi;
-      st.weight = surfaceWeight(e, x1.data(), dim_, q);
+      st.weight = surfaceWeight(e, xg, dim_, q, curved);
       if (scene_->axisymmetric) {
         // A ring: forces and flows are for the full circle, every term weighted here once.
         // Nodal points take the lumped weight int N_q 2 pi r ds of node q's function (node
@@ -183,7 +192,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
       }
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
-          st.frame[i][j] = cell.frame[i][j];
+          st.frame[i][j] = frame[i][j];
       double gap[3] = {0, 0, 0}, gap_rate[3] = {0, 0, 0};
       // The gap from the nodes' jumps (not the difference of the two faces' displacements,
       // which would lose digits to a large common motion).
@@ -194,13 +203,13 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
           st.displacement1[d] += N[a] * u[cell.u1[a] + d];
           st.displacement2[d] += N[a] * u[cell.u2[a] + d];
         }
-      for (int a = 0; a < e.num_vertices; ++a)
+      for (int a = 0; a < (curved ? e.num_nodes : e.num_vertices); ++a)
         for (int d = 0; d < dim_; ++d)
-          st.x[d] += phi[a] * x1[a * dim_ + d];
+          st.x[d] += (curved ? N : phi)[a] * xg[a * dim_ + d];
       double local_gap[3] = {0, 0, 0};
       for (int k = 0; k < dim_; ++k)
         for (int d = 0; d < dim_; ++d)
-          local_gap[k] += cell.frame[k][d] * gap[d];
+          local_gap[k] += frame[k][d] * gap[d];
       st.gap_normal = local_gap[0];
       st.gap_tangential[0] = local_gap[1];
       st.gap_tangential[1] = local_gap[2];
@@ -210,18 +219,18 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
       st.opening =
           physics::mechanicalOpening(params, initial_[h], st.gap_normal, st.response.dilation);
       double T[3][3];
-      globalTraction(st.response, cell.frame, dim_, st.traction, T);
+      globalTraction(st.response, frame, dim_, st.traction, T);
       if (cell.gap_water) {
         // Total normal pressure p'_N + p_w with the gap water at its hydrostatic pressure
         // (fixed: no contribution to the tangent).
         const double pw = initial_pressure_(st.x);
         st.interface_pressure = pw;
         for (int d = 0; d < dim_; ++d)
-          st.traction[d] -= pw * cell.frame[0][d];
+          st.traction[d] -= pw * frame[0][d];
       }
       if (flow) {
         st.flow = true;
-        surfaceGradients(e, x1.data(), dim_, q, fp.grad_phi);
+        surfaceGradients(e, xg, dim_, q, fp.grad_phi, curved);
         double p1 = 0.0, p2 = 0.0;
         for (int d = 0; d < 3; ++d)
           fp.grad_p3[d] = 0.0;
@@ -234,7 +243,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         }
         // Total normal pressure p'_N + p3 on both faces (friction uses p'_N only).
         for (int d = 0; d < dim_; ++d)
-          st.traction[d] -= st.interface_pressure * cell.frame[0][d];
+          st.traction[d] -= st.interface_pressure * frame[0][d];
         // Aperture and its rate. The opening o = max(0, g_N - c) is not differentiable where
         // the gap closes, so its rate is the secant over the step of the integrator's own gap
         // rate: with dt the time since the last accepted state and g_b = g_N - dt dg_N/dt,
@@ -255,7 +264,7 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         // telescopes over the steps like the opening's under backward Euler.
         double gn_rate = 0.0;
         for (int d = 0; d < dim_; ++d)
-          gn_rate += cell.frame[0][d] * gap_rate[d];
+          gn_rate += frame[0][d] * gap_rate[d];
         const double dilation_n = physics::dilation(params, committed_[h].slip_plastic);
         const double back_opening = physics::mechanicalOpening(
             params, initial_[h], st.gap_normal - rates.dt * gn_rate, dilation_n);
@@ -274,9 +283,9 @@ PetscErrorCode InterfaceAssembly::loop(Vec local, const InterfaceRates &rates,
         fp.d_conductivity = c.d_aperture;
         double gdotn = 0.0;
         for (int d = 0; d < dim_; ++d)
-          gdotn += (d == dim_ - 1 ? -g : 0.0) * cell.frame[0][d];
+          gdotn += (d == dim_ - 1 ? -g : 0.0) * frame[0][d];
         for (int d = 0; d < 3; ++d)
-          fp.gravity_t[d] = (d == dim_ - 1 ? -g : 0.0) * (d < dim_) - gdotn * cell.frame[0][d];
+          fp.gravity_t[d] = (d == dim_ - 1 ? -g : 0.0) * (d < dim_) - gdotn * frame[0][d];
         physics::longitudinalFlux(c.value, dim_, fp.grad_p3, fp.gravity_t, scene_->fluid_density,
                                   st.longitudinal_flux);
         if (cell.porous1)
@@ -383,7 +392,7 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                    const Interface &in = scene_->interfaces[cell.iface];
                    const int nu = (int)cell.u1.size(), nf = (int)cell.p3.size();
                    const double w = st.weight;
-                   const double *e1 = cell.frame[0];
+                   const double *e1 = st.frame[0];
                    // Contact: R_1a = -w N_a t(g), R_2a = +w N_a t(g), g = sum N_b (u_2b - u_1b)
                    // over the displacement nodes.
                    for (int a = 0; a < nu; ++a)
@@ -418,7 +427,7 @@ PetscErrorCode InterfaceAssembly::jacobian(Vec local, const InterfaceRates &rate
                    bool dilating = false;
                    for (int k = 0; k < dim_; ++k)
                      for (int j = 0; j < dim_; ++j) {
-                       dh_dilation[j] += fp.d_aperture_dilation[k] * cell.frame[k][j];
+                       dh_dilation[j] += fp.d_aperture_dilation[k] * st.frame[k][j];
                        dilating = dilating || fp.d_aperture_dilation[k] != 0.0;
                      }
                    const double inv_dt = rates.dt > 0.0 ? 1.0 / rates.dt : 0.0;

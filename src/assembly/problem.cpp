@@ -9,9 +9,11 @@
 #include "poroseam/biot.hpp"
 #include "poroseam/closure_cache.hpp"
 #include "poroseam/collective_check.hpp"
+#include "poroseam/curved_nodes.hpp"
 #include "poroseam/elastic.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
+#include "poroseam/mesh_points.hpp"
 
 #include <cmath>
 #include <petscsf.h>
@@ -272,6 +274,33 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
     for (const auto &cell : cells_)
       points.push_back(cell.cell);
     PetscCall(closures_.setup(dm, points));
+  }
+  node_places_.clear();
+  if (curvedNodes(dm)) {
+    PetscCall(displacementNodePlaces(dm, node_places_));
+    // A curved cell can fold where its straight-sided one does not (a coarse cell on a tight
+    // curve): its Jacobian must stay positive at every integration point.
+    const PetscScalar *ca;
+    std::vector<double> xg;
+    PetscCall(VecGetArrayRead(coords, &ca));
+    for (size_t i = 0; i < cells_.size() && error.empty(); ++i) {
+      const ReferenceElement &e = elements_[cells_[i].element];
+      cellGeometry(i, ca, xg);
+      for (int q = 0; q < e.num_quadrature; ++q) {
+        if (mapQuadraturePoint(e, xg.data(), q, g, true) > 0.0) continue;
+        std::ostringstream msg;
+        msg << "-mesh_geometry_order 2: the curved " << DMPolytopeTypes[e.type] << " cell "
+            << cells_[i].cell << " near (" << g.x[0] << ", " << g.x[1] << ", "
+            << (dim_ == 3 ? g.x[2] : 0.0)
+            << ") folds (non-positive Jacobian determinant at an integration point): the "
+               "cell is too coarse for its curve, or its second-order nodes are misplaced; "
+               "refine the mesh there, or use -mesh_geometry_order 1";
+        error = msg.str();
+        break;
+      }
+    }
+    PetscCall(VecRestoreArrayRead(coords, &ca));
+    PetscCall(checkOnAllRanks(comm, error));
   }
   if (any_skeleton_history_) PetscCall(checkInitialYield(comm));
   {

@@ -22,6 +22,21 @@ PetscErrorCode Problem::residual(double t, Vec local, Vec local_rate, const Resi
   PetscFunctionReturn(0);
 }
 
+bool Problem::cellGeometry(size_t i, const PetscScalar *coords, std::vector<double> &xc) const
+{
+  if (node_places_.empty()) {
+    const int nc = closures_.coordinateSize(i);
+    xc.resize(nc);
+    gatherClosure(coords, closures_.coordinates(i), nc, xc.data());
+    return false;
+  }
+  // The closure's first values are the displacement nodes, in the element's node order.
+  const int ng = elements_[cells_[i].element].num_nodes * dim_;
+  xc.resize(ng);
+  gatherClosure(node_places_.data(), closures_.local(i), ng, xc.data());
+  return true;
+}
+
 void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
                         const PetscScalar *coords, double mass_scale, double shift,
                         bool with_jacobian, CellWork &w, physics::SkeletonResponse *responses) const
@@ -30,11 +45,11 @@ void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
   CellMaterial m = materialOf(*scene_, scene_->regions[cell.region], cell.size);
   const bool history = cell.history != kNoHistory;
   if (history) m.law = &laws_[cell.region];
-  const int n = closures_.closureSize(i), nc = closures_.coordinateSize(i);
-  w.x.resize(n), w.xdot.resize(n), w.xc.resize(nc);
+  const int n = closures_.closureSize(i);
+  w.x.resize(n), w.xdot.resize(n);
   gatherClosure(u, closures_.local(i), n, w.x.data());
   gatherClosure(u_t, closures_.local(i), n, w.xdot.data());
-  gatherClosure(coords, closures_.coordinates(i), nc, w.xc.data());
+  const bool curved = cellGeometry(i, coords, w.xc);
   w.F.assign(n, 0.0);
   if (with_jacobian) w.K.assign((size_t)n * n, 0.0);
   CellKernel kernel{
@@ -43,6 +58,7 @@ void Problem::cellTerms(size_t i, const PetscScalar *u, const PetscScalar *u_t,
   for (int d = 0; d < dim_; ++d)
     kernel.gravity[d] = gravityVector(d);
   kernel.work = &w.kernel;
+  kernel.curved = curved;
   if (history) {
     kernel.history = &skeleton_committed_[cell.history];
     kernel.responses = responses;

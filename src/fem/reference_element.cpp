@@ -474,14 +474,30 @@ PetscErrorCode ReferenceElement::createNodal(DMPolytopeType type, ReferenceEleme
   PetscFunctionReturn(0);
 }
 
-double surfaceWeight(const ReferenceElement &e, const double *coords, int space, int q)
+namespace {
+/// Tangents d x / d xi_k (k < e.dim) of a face element at its point q: through the vertex
+/// basis (straight face, coords nv x space) or, curved, the node basis (coords nn x space).
+void surfaceTangents(const ReferenceElement &e, const double *coords, int space, int q,
+                     bool curved, double t[2][3])
 {
-  const double *dphi = &e.basis_derivatives[q * e.num_vertices * e.dim];
-  double t[2][3] = {{0, 0, 0}, {0, 0, 0}};
+  const int nb = curved ? e.num_nodes : e.num_vertices;
+  const double *dphi =
+      curved ? &e.node_basis_derivatives[q * nb * e.dim] : &e.basis_derivatives[q * nb * e.dim];
+  for (int k = 0; k < 2; ++k)
+    for (int r = 0; r < 3; ++r)
+      t[k][r] = 0.0;
   for (int k = 0; k < e.dim; ++k)
-    for (int a = 0; a < e.num_vertices; ++a)
+    for (int a = 0; a < nb; ++a)
       for (int r = 0; r < space; ++r)
         t[k][r] += coords[a * space + r] * dphi[a * e.dim + k];
+}
+} // namespace
+
+double surfaceWeight(const ReferenceElement &e, const double *coords, int space, int q,
+                     bool curved)
+{
+  double t[2][3];
+  surfaceTangents(e, coords, space, q, curved, t);
   double measure = 1.0;
   if (e.dim == 1)
     measure = std::sqrt(t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2]);
@@ -492,6 +508,22 @@ double surfaceWeight(const ReferenceElement &e, const double *coords, int space,
     measure = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   }
   return e.quadrature_weights[q] * measure;
+}
+
+void surfaceNormal(const ReferenceElement &e, const double *coords, int space, int q,
+                   bool curved, const double side[3], double n[3])
+{
+  double t[2][3];
+  surfaceTangents(e, coords, space, q, curved, t);
+  if (space == 2)
+    n[0] = t[0][1], n[1] = -t[0][0], n[2] = 0.0;
+  else
+    n[0] = t[0][1] * t[1][2] - t[0][2] * t[1][1], n[1] = t[0][2] * t[1][0] - t[0][0] * t[1][2],
+    n[2] = t[0][0] * t[1][1] - t[0][1] * t[1][0];
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const double sign = n[0] * side[0] + n[1] * side[1] + n[2] * side[2] < 0.0 ? -1.0 : 1.0;
+  for (int r = 0; r < 3; ++r)
+    n[r] *= sign / length;
 }
 
 void faceNormal(const double *x, int nv, int space, double n[3])
@@ -537,13 +569,19 @@ double jacobian(int dim, int nv, const double *coords, const double *dphi, doubl
 }
 } // namespace
 
-double mapQuadraturePoint(const ReferenceElement &e, const double *coords, int q, PointGeometry &g)
+double mapQuadraturePoint(const ReferenceElement &e, const double *coords, int q, PointGeometry &g,
+                          bool curved)
 {
   const int dim = e.dim, nv = e.num_vertices, nn = e.num_nodes;
   const double *phi = &e.basis[q * nv];
   const double *dphi = &e.basis_derivatives[q * nv * dim];
+  // The geometry's basis: the vertex basis (straight-sided), or the node basis (isoparametric:
+  // coords are the nodes' places, nn x dim).
+  const int ng = curved ? nn : nv;
+  const double *gphi = curved ? &e.node_basis[q * nn] : phi;
+  const double *gdphi = curved ? &e.node_basis_derivatives[q * nn * dim] : dphi;
   double J[3][3], invJ[3][3];
-  const double det = jacobian(dim, nv, coords, dphi, J, invJ);
+  const double det = jacobian(dim, ng, coords, gdphi, J, invJ);
   // Gradients of the vertex basis, then (order > 1) of the node basis, in one buffer sized
   // on first use.
   const bool separate = e.order > 1;
@@ -554,9 +592,9 @@ double mapQuadraturePoint(const ReferenceElement &e, const double *coords, int q
   g.weight = e.quadrature_weights[q] * det;
   for (int r = 0; r < 3; ++r)
     g.x[r] = 0.0;
-  for (int a = 0; a < nv; ++a)
+  for (int a = 0; a < ng; ++a)
     for (int r = 0; r < dim; ++r)
-      g.x[r] += phi[a] * coords[a * dim + r];
+      g.x[r] += gphi[a] * coords[a * dim + r];
   // grad phi = invJ^T grad_xi phi
   auto physical = [&](int nb, const double *ref, double *out) {
     for (int a = 0; a < nb; ++a)
@@ -581,22 +619,28 @@ double mapQuadraturePoint(const ReferenceElement &e, const double *coords, int q
   return det;
 }
 
-bool locatePoint(const ReferenceElement &e, const double *coords, const double x[], double xi[])
+bool locatePoint(const ReferenceElement &e, const double *coords, const double x[], double xi[],
+                 bool curved)
 {
   const int dim = e.dim, nv = e.num_vertices;
+  // The map: vertex basis (straight-sided) or node basis (curved: coords are the nodes').
+  const int ng = curved ? e.num_nodes : nv;
   // Start at the reference centroid, Newton on x(xi) = x (one step for affine cells).
   for (int k = 0; k < dim; ++k) {
     xi[k] = 0.0;
     for (int a = 0; a < nv; ++a)
       xi[k] += e.vertex_coords[a * dim + k] / nv;
   }
-  std::vector<double> phi_(nv), dphi_(nv * dim);
+  std::vector<double> phi_(std::max(nv, ng)), dphi_(std::max(nv, ng) * dim);
   double *phi = phi_.data(), *dphi = dphi_.data();
   for (int it = 0; it < 20; ++it) {
-    e.evaluate(xi, phi, dphi);
+    if (curved)
+      e.evaluateNodes(xi, phi, dphi);
+    else
+      e.evaluate(xi, phi, dphi);
     double J[3][3], invJ[3][3], r[3] = {0, 0, 0};
-    jacobian(dim, nv, coords, dphi, J, invJ);
-    for (int a = 0; a < nv; ++a)
+    jacobian(dim, ng, coords, dphi, J, invJ);
+    for (int a = 0; a < ng; ++a)
       for (int k = 0; k < dim; ++k)
         r[k] += phi[a] * coords[a * dim + k];
     double step = 0.0;

@@ -1,4 +1,5 @@
 #include "poroseam/collective_check.hpp"
+#include "poroseam/curved_nodes.hpp"
 #include "poroseam/external_program.hpp"
 #include "poroseam/geo_check.hpp"
 #include "poroseam/interfaces.hpp"
@@ -63,14 +64,17 @@ bool logSaysOutOfMemory(const std::string &log)
 
 /// Runs gmsh on a .geo at a size factor, writing `msh` (MSH 2.2 ASCII); "" or what failed.
 std::string runGmsh(const std::string &geo, double size_factor, const std::string &msh,
-                    const std::string &log, double time_limit)
+                    const std::string &log, double time_limit, int geometry_order)
 {
   const std::string factor = factorText(size_factor);
-  // An argument vector, no shell: paths with quotes or $(...) are only names.
+  // An argument vector, no shell: paths with quotes or $(...) are only names. Order 2: gmsh
+  // puts a node on every edge, quadrangle and hexahedron, on the model's curve or surface
+  // where the entity lies on one (-mesh_geometry_order 2).
   ProgramEnd end;
-  const std::string why =
-      runProgram({"gmsh", "-3", "-v", "1", "-format", "msh22", "-clscale", factor, "-o", msh, geo},
-                 log, time_limit, &end);
+  std::vector<std::string> args = {"gmsh", "-3", "-v", "1", "-format", "msh22", "-clscale",
+                                   factor, "-o", msh, geo};
+  if (geometry_order == 2) args.insert(args.begin() + 4, {"-order", "2"});
+  const std::string why = runProgram(args, log, time_limit, &end);
   std::ostringstream limit;
   limit << time_limit;
   if (end.timed_out)
@@ -110,7 +114,8 @@ std::string formatCount(double n)
 /// mesh above `max_elements`, or one whose estimated memory exceeds the machine's, is refused
 /// before gmsh spends minutes and gigabytes on it.
 std::string meshGeometry(const std::string &geo, double size_factor, const MeshLimits &limits,
-                         const std::string &work_dir, std::string &msh, std::string *note)
+                         const std::string &work_dir, int geometry_order, std::string &msh,
+                         std::string *note)
 {
   std::string why = checkGeoProgram(geo);
   if (!why.empty()) return why;
@@ -122,7 +127,7 @@ std::string meshGeometry(const std::string &geo, double size_factor, const MeshL
   msh = work_dir + "/" + stem + ".msh";
   if (size_factor < 0.5) {
     const std::string probe = work_dir + "/" + stem + ".factor1.msh";
-    why = runGmsh(geo, 1.0, probe, work_dir + "/gmsh.log", limits.time_limit);
+    why = runGmsh(geo, 1.0, probe, work_dir + "/gmsh.log", limits.time_limit, 1);
     if (!why.empty()) return why;
     std::vector<PhysicalName> names;
     MshSummary s;
@@ -145,7 +150,8 @@ std::string meshGeometry(const std::string &geo, double size_factor, const MeshL
                           "give a larger -mesh_size_factor", note);
     if (!why.empty()) return why;
   }
-  return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log", limits.time_limit);
+  return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log", limits.time_limit,
+                 geometry_order);
 }
 
 /// The supports' labels, as "Face Sets" holds the face groups: "Vertex Sets", the vertices of
@@ -206,7 +212,7 @@ PetscErrorCode markSupports(DM dm, const MshSummary &msh)
 
 PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_factor,
                             const std::string &work_dir, DM *dm, std::vector<PhysicalName> *names,
-                            int *dim)
+                            int *dim, int geometry_order)
 {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
@@ -228,11 +234,20 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
     else if (!S_ISREG(st.st_mode))
       error = what + " is not a regular file: expected a Gmsh .msh or .geo file";
     else if (endsWith(file, ".geo"))
-      error = meshGeometry(file, size_factor, limits, work_dir, msh, &note);
+      error = meshGeometry(file, size_factor, limits, work_dir, geometry_order, msh, &note);
     else if (!endsWith(file, ".msh"))
       error = what + ": expected a Gmsh .msh or .geo file";
     // Every .msh is checked before PETSc's reader sees it (that reader trusts the file).
     if (error.empty()) error = checkGmshFile(msh, found, summary);
+    // The elements' order and -mesh_geometry_order agree: no high-order node is dropped
+    // silently, and a curved run has nodes to be curved by.
+    if (error.empty() && summary.order == 2 && geometry_order == 1)
+      error = "mesh file '" + msh + "' has second-order elements: give -mesh_geometry_order 2 " +
+              "to compute with their curved geometry (with -displacement_order 2), or a " +
+              "first-order mesh";
+    if (error.empty() && summary.order == 1 && geometry_order == 2)
+      error = "-mesh_geometry_order 2: mesh file '" + msh + "' has first-order elements " +
+              "only; give a .geo (meshed with gmsh -order 2) or a second-order .msh";
     if (error.empty() && summary.cells > max_elements)
       error = "mesh file '" + msh + "' has " + std::to_string(summary.cells) +
               " elements of dimension " + std::to_string(summary.dim) +
@@ -277,7 +292,10 @@ PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_
     std::getline(in, n.name);
     names->push_back(n);
   }
-  PetscCall(DMPlexCreateGmshFromFile(comm, msh.c_str(), PETSC_TRUE, dm));
+  // Vertex coordinates only (PETSc 3.18 would otherwise make a degree-2 coordinate field of a
+  // second-order file); its edge, face and cell nodes go into a table beside (curved_nodes.hpp).
+  PetscCall(readGmshFile(comm, msh.c_str(), false, dm));
+  if (geometry_order == 2) PetscCall(attachCurvedNodes(comm, msh.c_str(), *dm));
   PetscCall(markSupports(*dm, summary));
   PetscInt d;
   PetscCall(DMGetDimension(*dm, &d));
@@ -338,6 +356,7 @@ PetscErrorCode distributeMesh(DM *dm)
                               PETSC_COPY_VALUES, &is));
     PetscCall(PetscObjectCompose((PetscObject)dist, kSerialPointNumbers, (PetscObject)is));
     PetscCall(ISDestroy(&is));
+    PetscCall(keepCurvedNodes(*dm, dist));
     PetscCall(DMDestroy(dm));
     *dm = dist;
   }

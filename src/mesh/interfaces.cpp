@@ -1,4 +1,5 @@
 #include "poroseam/interfaces.hpp"
+#include "poroseam/curved_nodes.hpp"
 
 #include "poroseam/collective_check.hpp"
 #include "poroseam/reference_element.hpp"
@@ -270,6 +271,7 @@ PetscErrorCode splitInterfaces(DM *dm, const Scene &scene)
   PetscCall(DMLabelDestroy(&buried));
   PetscCall(DMLabelDestroy(&faces));
   PetscCall(DMDestroy(&sub));
+  PetscCall(keepCurvedNodes(*dm, dmSplit));
   PetscCall(DMDestroy(dm));
   *dm = dmSplit;
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));

@@ -20,10 +20,27 @@
 namespace poroseam {
 namespace {
 
-/// Nodes per element for the Gmsh types poroseam computes with (linear elements only).
+/// Nodes per element for the Gmsh types poroseam computes with: linear elements, and the
+/// complete second-order ones (gmsh -order 2; -mesh_geometry_order 2), whose first nodes are
+/// the corners of the linear type (linearType).
 int nodesOfType(long type, int *dim)
 {
   switch (type) {
+  case 8:
+    *dim = 1;
+    return 3; // 3-node line
+  case 9:
+    *dim = 2;
+    return 6; // 6-node triangle
+  case 10:
+    *dim = 2;
+    return 9; // 9-node quadrangle
+  case 11:
+    *dim = 3;
+    return 10; // 10-node tetrahedron
+  case 12:
+    *dim = 3;
+    return 27; // 27-node hexahedron
   case 15:
     *dim = 0;
     return 1; // point
@@ -45,6 +62,12 @@ int nodesOfType(long type, int *dim)
   default:
     return -1;
   }
+}
+
+/// The linear type with the same corners (a second-order type's first nodes).
+long linearType(long type)
+{
+  return type == 8 ? 1 : type == 9 ? 2 : type == 10 ? 3 : type == 11 ? 4 : type == 12 ? 5 : type;
 }
 
 const char *typeName(long type)
@@ -433,9 +456,23 @@ private:
         fail("element " + std::to_string(tag) + " refers to node " + std::to_string(node) +
                  ", which is not in $Nodes",
              binary);
-    const std::string why = geometry_.element(tag, type, nodes, physical);
+    // A second-order element: its corners are checked as the linear element (the cell's
+    // shape), its order noted; one file holds one order (PETSc reads one coordinate degree).
+    const long linear = linearType(type);
+    const int order = linear == type ? 1 : 2;
+    if (type != 15) {
+      if (s_.order == 0) s_.order = order;
+      if (s_.order != order)
+        fail("element " + std::to_string(tag) + " is of order " + std::to_string(order) +
+                 " and an earlier one of order " + std::to_string(s_.order) +
+                 ": give one order for the whole mesh (gmsh -order 1 or 2)",
+             binary);
+    }
+    int corners_dim = 0;
+    corners_.assign(nodes.begin(), nodes.begin() + nodesOfType(linear, &corners_dim));
+    const std::string why = geometry_.element(tag, linear, corners_, physical);
     if (!why.empty()) fail(why, binary);
-    if (physical >= 0) support(type, physical, nodes);
+    if (physical >= 0) support(linear, physical, corners_);
     int dim = 0;
     nodesOfType(type, &dim);
     if (dim > s_.dim) s_.dim = dim, s_.cells = 0;
@@ -448,8 +485,9 @@ private:
     const int n = nodesOfType(type, &dim);
     if (n < 0)
       fail("element type " + std::to_string(type) + " (" + typeName(type) +
-               ") is not supported: poroseam needs linear points, lines, triangles, "
-               "quadrangles, tetrahedra or hexahedra (gmsh -order 1)",
+               ") is not supported: poroseam needs points, lines, triangles, "
+               "quadrangles, tetrahedra or hexahedra, linear (gmsh -order 1) or complete "
+               "second-order (gmsh -order 2, for -mesh_geometry_order 2)",
            binary);
     return n;
   }
@@ -563,7 +601,7 @@ private:
         element(tag, type, nodes, physical.empty() ? -1 : physical[0], s_.binary);
         for (size_t k = 1; k < physical.size(); ++k) {
           geometry_.usePhysical((int)dim, physical[k]); // the entity's other groups
-          support(type, physical[k], nodes);
+          support(linearType(type), physical[k], nodes);
         }
       }
     }
@@ -581,6 +619,7 @@ private:
   std::set<long long> entities_[4];
   std::map<long long, std::vector<long long>> physicals_[4]; // entity -> its physical tags
   MshGeometry geometry_;
+  std::vector<long long> corners_;
 };
 
 } // namespace

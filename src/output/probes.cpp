@@ -1,5 +1,8 @@
 #include "poroseam/probes.hpp"
 
+#include "poroseam/curved_nodes.hpp"
+#include "poroseam/mesh_points.hpp"
+
 #include "poroseam/collective_check.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
@@ -38,6 +41,15 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
   // One reference element per cell type: building one (a PETSc reference cell DM) for every
   // cell scanned made this the bulk of the set-up on large meshes.
   std::map<DMPolytopeType, ReferenceElement> elements;
+  // Curved cells (-mesh_geometry_order 2): located through their own (isoparametric) map.
+  std::vector<double> places;
+  Vec placed = nullptr;
+  if (curvedNodes(dm)) {
+    PetscCall(displacementNodePlaces(dm, places));
+    PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, (PetscInt)places.size(), places.data(),
+                                    &placed));
+  }
+  std::vector<double> geometry;
   for (PetscInt c = cStart; c < cEnd && open > 0; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(dm, c, &ct));
@@ -49,22 +61,34 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
       it = elements.emplace(ct, created).first;
     }
     const ReferenceElement &e = it->second;
-    PetscScalar *x = nullptr;
+    PetscScalar *xv = nullptr;
     PetscInt n = 0;
-    PetscCall(DMPlexVecGetClosure(dm, csec, coords, c, &n, &x));
-    // Bounding box of the vertices, padded: locatePoint accepts points up to its tolerance
+    PetscCall(DMPlexVecGetClosure(dm, csec, coords, c, &n, &xv));
+    const bool curved = placed != nullptr;
+    if (curved) {
+      PetscScalar *xp = nullptr;
+      PetscInt npl = 0;
+      PetscCall(DMPlexVecGetClosure(dm, s, placed, c, &npl, &xp));
+      geometry.assign(xp, xp + e.num_nodes * dim_);
+      PetscCall(DMPlexVecRestoreClosure(dm, s, placed, c, &npl, &xp));
+    } else
+      geometry.assign(xv, xv + n);
+    const double *x = geometry.data();
+    const int ng = curved ? e.num_nodes : e.num_vertices;
+    // Bounding box of the vertices (curved: the nodes, padded by a tenth: a quadratic edge
+    // may bulge past its nodes), padded: locatePoint accepts points up to its tolerance
     // (1e-8 in reference coordinates, i.e. a few 1e-8 of the cell's extent) outside the cell,
     // so a box padded by 1e-6 of the extent (plus round-off of the coordinates) never rejects
     // a cell it would accept, and the cheap box test spares the inverse map in all others.
     double lo[3], hi[3], pad = 0.0;
     for (int k = 0; k < dim_; ++k) {
       lo[k] = hi[k] = x[k];
-      for (int a = 1; a < e.num_vertices; ++a) {
+      for (int a = 1; a < ng; ++a) {
         lo[k] = std::min(lo[k], (double)x[a * dim_ + k]);
         hi[k] = std::max(hi[k], (double)x[a * dim_ + k]);
       }
-      pad = std::max(pad,
-                     1e-6 * (hi[k] - lo[k]) + 1e-12 * std::max(std::fabs(lo[k]), std::fabs(hi[k])));
+      pad = std::max(pad, (curved ? 0.1 : 1e-6) * (hi[k] - lo[k]) +
+                              1e-12 * std::max(std::fabs(lo[k]), std::fabs(hi[k])));
     }
     for (size_t i = 0; i < np; ++i) {
       if (porous_found[i]) continue;
@@ -74,7 +98,7 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
         in_box = p[k] >= lo[k] - pad && p[k] <= hi[k] + pad;
       if (!in_box) continue;
       double xi[3];
-      if (!locatePoint(e, x, p, xi)) continue;
+      if (!locatePoint(e, x, p, xi, curved)) continue;
       Located &loc = located_[i];
       // On a region border, prefer a cell whose closure has pressure dofs (a porous cell):
       // the pressure there is the porous side's.
@@ -98,8 +122,9 @@ PetscErrorCode Probes::setup(DM dm, const Scene &scene)
       e.evaluateNodes(xi, loc.node_phi.data(), nullptr);
       if (porous) porous_found[i] = 1, --open;
     }
-    PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
+    PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &xv));
   }
+  PetscCall(VecDestroy(&placed));
   // The lowest rank that found a probe evaluates it.
   std::vector<int> mine(np), owner(np);
   for (size_t i = 0; i < np; ++i)

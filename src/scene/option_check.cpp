@@ -14,6 +14,7 @@ namespace {
 /// where a near miss may be PETSc's own.
 const char *const kSceneNames[] = {"mesh",
                                    "mesh_size_factor",
+                                   "mesh_geometry_order",
                                    "mesh_max_elements",
                                    "mesh_time_limit",
                                    "mesh_memory_check",

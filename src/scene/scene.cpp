@@ -344,6 +344,20 @@ PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
                     &scene.mesh_size_factor, nullptr));
   PetscCheck(scene.mesh_size_factor > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-mesh_size_factor %g: must be > 0", scene.mesh_size_factor);
+  {
+    double order = scene.mesh_geometry_order;
+    PetscCall(getReal(PetscOptionsObject, "-mesh_geometry_order",
+                      "order of the cells' geometry: 1 (straight-sided) or 2 (second-order gmsh "
+                      "cells, curved along curved boundaries; needs -displacement_order 2)",
+                      &order, nullptr));
+    char given[32];
+    std::snprintf(given, sizeof given, "%g", order);
+    PetscCheck(order == 1.0 || order == 2.0, comm, PETSC_ERR_USER_INPUT,
+               "-mesh_geometry_order %s: expected 1 (straight-sided cells) or 2 (curved, "
+               "second-order gmsh cells)",
+               given);
+    scene.mesh_geometry_order = (int)order;
+  }
   PetscCall(getString(PetscOptionsObject, "-output_dir", "directory of the results",
                       scene.output_dir, nullptr));
   PetscOptionsEnd();
@@ -399,6 +413,11 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
                "-displacement_order %s: expected 1 (linear) or 2 (quadratic, Taylor-Hood)", given);
     scene.displacement_order = (int)order;
   }
+  // Isoparametric: the curved cell is mapped by the displacement's own quadratic basis.
+  PetscCheck(scene.mesh_geometry_order == 1 || scene.displacement_order == 2, comm,
+             PETSC_ERR_USER_INPUT,
+             "-mesh_geometry_order 2: curved cells need -displacement_order 2 (the quadratic "
+             "displacement basis maps them; linear elements cannot follow the curve)");
 
   std::string initial = "none";
   PetscCall(getString(PetscOptionsObject, "-initial_state",

@@ -333,7 +333,8 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   int dim;
   PetscCall(beginLogPhase(run.events.mesh));
   PetscCall(loadGmshMesh(comm, run.scene.mesh_file, run.scene.mesh_size_factor,
-                         run.scene.output_dir + "/mesh", &run.dm, &names, &dim));
+                         run.scene.output_dir + "/mesh", &run.dm, &names, &dim,
+                         run.scene.mesh_geometry_order));
   PetscCall(readSceneOptions(comm, names, dim, run.scene));
   PetscCall(splitInterfaces(&run.dm, run.scene));
   PetscCall(checkBodiesSupported(run.dm, run.scene)); // no part free of every support

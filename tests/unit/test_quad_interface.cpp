@@ -37,6 +37,7 @@ struct QuadCase {
   double rate_factor = 1.0;         ///< a: dx/dt = a (x - x_prev) / dt (flow cases)
   const char *dilation_angle = "0"; ///< psi [deg]
   bool axisymmetric = false;        ///< x = r: ring weights 2 pi r (the left side is the axis)
+  const char *geometry_order = "1"; ///< -mesh_geometry_order (2: curved faces and cells)
 };
 
 PetscErrorCode setOption(const char *name, const std::string &value)
@@ -62,6 +63,7 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
   const std::string src = POROSEAM_SOURCE_DIR;
   PetscCall(setOption("-mesh", src + "/meshes/" + c.mesh));
   PetscCall(setOption("-displacement_order", "2"));
+  PetscCall(setOption("-mesh_geometry_order", c.geometry_order));
   PetscCall(setOption("-regions", "base,block"));
   if (c.axisymmetric) PetscCall(setOption("-axisymmetric", "true"));
   for (const char *r : {"base", "block"}) {
@@ -91,7 +93,7 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
   PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
   PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
                          testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
-                         &names, &dim));
+                         &names, &dim, scene.mesh_geometry_order));
   PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
   res->dim = dim;
   PetscCall(splitInterfaces(&dm, scene));
@@ -420,7 +422,31 @@ INSTANTIATE_TEST_SUITE_P(
                  true,
                  1.0,
                  "0",
-                 true}),
+                 true},
+        // Curved faces (-mesh_geometry_order 2): the contact is a circular arc, each point with
+        // its own frame; sliding (nodal rule) and open with flow.
+        QuadCase{"slip2d_curved_nodal",
+                 "block_on_arc_2d.geo",
+                 2.0,
+                 "nodal",
+                 {2.5e-5, -1e-5, 0},
+                 (int)S::slip,
+                 false,
+                 1.0,
+                 "0",
+                 false,
+                 "2"},
+        QuadCase{"flow_open2d_curved",
+                 "block_on_arc_2d.geo",
+                 2.0,
+                 "gauss",
+                 {0, 2e-6, 0},
+                 (int)S::open,
+                 true,
+                 1.0,
+                 "0",
+                 false,
+                 "2"}),
     [](const auto &info) { return std::string(info.param.name); });
 
 // Patch test of the kinematics: each body is given a quadratic displacement field at every
