@@ -3,7 +3,7 @@
 // half domain [0, L] x [-L, L] holds the half crack from (0, 0) to (a, 0), embedded in the mesh
 // (Curve In Surface: the triangles conform to it) as the physical curve "crack", an interface
 // with one end on the symmetry plane (where its water pressure p3 is prescribed) and one
-// buried tip (not duplicated by the split). The far boundary, L = 50 a by default, stands in
+// buried tip (not duplicated by the split). The far boundary, L = 200 a by default, stands in
 // for infinity.
 // Physical curves: symmetry (x = 0, both halves), far (bottom, right and top), crack.
 // Physical surface: rock.
@@ -13,7 +13,7 @@
 // size, so a factor 1/2 halves every element (the grading is the same at every factor).
 // Overrides: gmsh -setnumber n 16, -setnumber L 20, ...
 If (!Exists(a)) a = 1.0; EndIf
-If (!Exists(L)) L = 50.0; EndIf
+If (!Exists(L)) L = 200.0; EndIf
 If (!Exists(n)) n = 8; EndIf          // elements along the half crack, away from the tip
 If (!Exists(tip_ratio)) tip_ratio = 8; EndIf
 If (!Exists(g)) g = 0.3; EndIf
