@@ -1,8 +1,10 @@
 """Sneddon's pressurised crack at displacement orders 1 and 2, against the closed form.
 
     sneddon.py                          the test: both orders on one mesh, checked
-    sneddon.py --study [--factors F,..] [--far L,..]   errors of both orders on several meshes
-                                        (and far-boundary distances), printed, nothing checked
+    sneddon.py --study [--factors F,..] [--far L,..] [--set NAME=VALUE]
+        errors of both orders on several meshes (then order 2 on the finest with the far
+        boundary at each L / a), printed, nothing checked; --set tip_ratio=32 etc. changes a
+        parameter of meshes/sneddon_half_2d.geo
 
 A straight crack of half-length a in an infinite elastic plane (plane strain), its faces
 pushed apart by a uniform pressure p, opens as the ellipse (Sneddon 1946)
@@ -147,17 +149,21 @@ def profile_errors(x, w, vertex, order, Ep, p, a=A_CRACK):
                 elements=len(verts) - 1, tip_h=x[verts[-1]] - x[verts[-2]])
 
 
-def run_order(scene, opts, order, factor, far=None, tag=""):
+def run_order(scene, opts, order, factor, geo_set=None):
+    """Runs one order on the scene's mesh at -mesh_size_factor factor, with the .geo's
+    parameters geo_set ({name: value}, e.g. {"L": 400}) when given; returns its errors."""
     Ep, p, D0 = parameters(opts)
+    geo_set = geo_set or {}
+    tag = "".join(f"_{k}{v}" for k, v in sorted(geo_set.items()))
     out = common.output_dir(f"sneddon_o{order}_f{factor}{tag}")
     args = ["-displacement_order", order, "-mesh_size_factor", factor]
-    if far is not None:
-        # The .geo's far-boundary distance through gmsh's -setnumber is not an option of
-        # poroseam: copy the .geo with another default.
+    if geo_set:
+        # gmsh's -setnumber is not an option of poroseam: a copy of the .geo with other
+        # defaults (it sets each parameter only when it does not exist yet).
         src = os.path.join(common.SOURCE, "meshes", "sneddon_half_2d.geo")
-        geo = os.path.join(out, "sneddon_far.geo")
+        geo = os.path.join(out, "sneddon_set.geo")
         with open(src) as fi, open(geo, "w") as fo:
-            fo.write(f"L = {far};\n" + fi.read())
+            fo.write("".join(f"{k} = {v};\n" for k, v in geo_set.items()) + fi.read())
         args += ["-mesh", geo]
     wall = common.run(scene, out, args)
     x, w, vertex = crack_opening(out)
@@ -170,7 +176,7 @@ def run_order(scene, opts, order, factor, far=None, tag=""):
     r["p3"] = abs(common.column(ts, "crack.p3_force")[-1] - p * A_CRACK) / (p * A_CRACK)
     r["wall"] = wall
     r["newton"] = int(common.column(ts, "newton_its")[-1])
-    print(f"  order {order}, factor {factor}{' L = ' + str(far) + ' a' if far else ''}: "
+    print(f"  order {order}, factor {factor}{' ' + str(geo_set) if geo_set else ''}: "
           f"{r['elements']} elements on the half crack (tip {r['tip_h']:.4g} m), "
           f"L2 {r['l2']:.3e}, centre {r['centre']:+.3e}, volume (crack.storage) {r['volume']:+.3e}, "
           f"volume (nodes) {r['nodal_volume']:+.3e} (difference {r['same_volume']:.1e}), p3 force {r['p3']:.1e}, "
@@ -178,11 +184,11 @@ def run_order(scene, opts, order, factor, far=None, tag=""):
     return r
 
 
-def study(scene, opts, factors, fars, L=None):
+def study(scene, opts, factors, fars, geo_set):
     rows = {}
     for order in (1, 2):
         for f in factors:
-            rows[(order, f)] = run_order(scene, opts, order, f, far=L, tag=f"_L{L}" if L else "")
+            rows[(order, f)] = run_order(scene, opts, order, f, geo_set)
     print("\n| order | factor | elements (half crack) | L2 rel. | rate | centre | rate | volume | rate |")
     print("|---|---|---|---|---|---|---|---|---|")
     for order in (1, 2):
@@ -197,7 +203,7 @@ def study(scene, opts, factors, fars, L=None):
                   f"{r['centre']:+.2e} | {rate('centre')} | {r['volume']:+.2e} | {rate('volume')} |")
             prev, prev_f = r, f
     for L in fars:
-        run_order(scene, opts, 2, factors[-1], far=L, tag=f"_L{L}")
+        run_order(scene, opts, 2, factors[-1], dict(geo_set, L=L))
 
 
 def main():
@@ -205,14 +211,16 @@ def main():
     ap.add_argument("--study", action="store_true")
     ap.add_argument("--factors", default="1,0.5,0.25")
     ap.add_argument("--far", default="", help="far-boundary distances L/a to compare (study)")
-    ap.add_argument("--L", type=float, default=None,
-                    help="far-boundary distance L/a of the study's table (default: the .geo's 50)")
+    ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                    help="a parameter of meshes/sneddon_half_2d.geo for the study (L, n, "
+                         "tip_ratio, g), repeatable")
     args = ap.parse_args()
     scene = common.scene_path("sneddon.opts")
     opts = common.read_scene(scene)
     if args.study:
         study(scene, opts, [float(f) for f in args.factors.split(",")],
-              [float(L) for L in args.far.split(",") if L], args.L)
+              [float(L) for L in args.far.split(",") if L],
+              dict(kv.split("=", 1) for kv in args.set))
         return
     chk = common.Checks("Sneddon's pressurised crack at displacement orders 1 and 2")
     res = {order: run_order(scene, opts, order, TEST_FACTOR) for order in (1, 2)}
