@@ -89,6 +89,10 @@ struct Run {
   /// step yet, or one that converged in its first iteration).
   double newton_last_fnorm = 0.0;
   double first_contraction = 0.0;
+  /// The first residual of this step's Newton iterations, and the part of it in the force
+  /// (displacement) rows: PETSc's relative test is measured against the latter when the water
+  /// rows dominate (convergenceTest).
+  double newton_first_fnorm = 0.0, newton_first_force_fnorm = 0.0;
   Vec jacobian_diagonal = nullptr; ///< with a fieldsplit: diag of the Jacobian (vertex_blocks)
   /// -snes_keep_preconditioner: the linear solver keeps its factorisation or preconditioner
   /// while the Jacobian is unchanged (Problem::jacobianRepeated), instead of redoing it for
