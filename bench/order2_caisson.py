@@ -91,6 +91,11 @@ def one_run(a, factor, preset, repeat, build):
         "peak_rss_mb_sum": sum(rss) / 1e6 if len(rss) == a.ranks else float("nan"),
         "peak_rss_mb_max_rank": max(rss) / 1e6 if rss else float("nan"),
     })
+    if status != "ok":
+        errors = [l for l in out.splitlines() if "error" in l.lower()]
+        row["note"] = (errors[0] if errors else " | ".join(out.strip().splitlines()[-2:]))[:200]
+        print(f"{name}: {status}: {row['note']}", flush=True)
+        return row
     print(f"{name}: {status}, {row['unknowns']} unknowns, {len(steps)} steps, Newton {newton}, "
           f"Krylov {krylov} ({row['krylov_per_newton']:.1f} per Newton), median step "
           f"{row['step_median_s']:.2f} s, memory {row['peak_rss_mb_sum']:.0f} MB (sum of ranks)",
@@ -128,7 +133,8 @@ def write_csv(path, rows):
     if not rows:
         return
     with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        names = list(dict.fromkeys(k for r in rows for k in r))  # failed runs have fewer
+        w = csv.DictWriter(f, fieldnames=names, restval="")
         w.writeheader()
         w.writerows(rows)
 
@@ -139,6 +145,10 @@ def main():
     if not os.path.exists(os.path.join(build, "poroseam")):
         sys.exit(f"bench: no {build}/poroseam: run scripts/setup")
     os.makedirs(os.path.join(a.output, "runs"), exist_ok=True)
+    # What scripts/bench exports, for a direct start of this file (mpiexec as root, 2 cores).
+    for k in ("OMPI_ALLOW_RUN_AS_ROOT", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM",
+              "OMPI_MCA_rmaps_base_oversubscribe"):
+        os.environ.setdefault(k, "1")
     print(f"3D quarter caisson, order {a.order}, {a.ranks} ranks, {a.steps} steps per run, "
           f"factors {', '.join(f'{f:g}' for f in a.factors)}, {a.repeats} repeat(s), presets "
           f"{', '.join(a.presets)} alternated; load average {os.getloadavg()[0]:.1f}", flush=True)
