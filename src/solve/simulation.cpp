@@ -276,6 +276,7 @@ PetscErrorCode releaseRun(Run &run, Vec *X)
   PetscCall(VecDestroy(X));
   PetscCall(VecDestroy(&run.previous));
   PetscCall(VecDestroy(&run.jacobian_diagonal));
+  PetscCall(ISDestroy(&run.force_rows));
   PetscCall(run.steady.destroy());
   PetscCall(VecDestroy(&run.initial));
   PetscCall(run.time.destroy());
