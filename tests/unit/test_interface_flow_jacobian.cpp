@@ -8,6 +8,7 @@
 // a = 1.5 the back-dated gap g - dt dg/dt of the storage secant is open or, in the "opens"
 // cases, closed while the gap is open. Closed and sliding with shear dilation, h = D0 + d with
 // the dilation d following every gap component.
+#include "region_closure.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/mesh.hpp"
@@ -114,17 +115,8 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
   PetscInt pStart, pEnd, cStart, cEnd;
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  std::vector<char> inBlock(pEnd - pStart, 0);
-  for (PetscInt cell = cStart; cell < cEnd; ++cell) {
-    PetscInt tag;
-    PetscCall(DMLabelGetValue(cellSets, cell, &tag));
-    if (tag != blockTag) continue;
-    PetscInt n, *pts = nullptr;
-    PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
-    for (PetscInt k = 0; k < n; ++k)
-      inBlock[pts[2 * k] - pStart] = 1;
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
-  }
+  std::vector<char> inBlock;
+  PetscCall(poroseam::test_support::markRegionClosure(dm, cellSets, blockTag, &inBlock));
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> noise(-1.0, 1.0);
   const double dt = 0.5;

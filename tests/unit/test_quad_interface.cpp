@@ -8,6 +8,7 @@
 // previous state as in a backward Euler or BDF2 step, so that storage is live.
 // The block is displaced relative to the base by a gap inside each regime, at every point that
 // carries a displacement node (vertices, edges, faces), plus a small random perturbation.
+#include "region_closure.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/mesh.hpp"
@@ -122,17 +123,8 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
   PetscInt pStart, pEnd, cStart, cEnd;
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  std::vector<char> inBlock(pEnd - pStart, 0);
-  for (PetscInt cell = cStart; cell < cEnd; ++cell) {
-    PetscInt tag;
-    PetscCall(DMLabelGetValue(cellSets, cell, &tag));
-    if (tag != blockTag) continue;
-    PetscInt n, *pts = nullptr;
-    PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
-    for (PetscInt k = 0; k < n; ++k)
-      inBlock[pts[2 * k] - pStart] = 1;
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
-  }
+  std::vector<char> inBlock;
+  PetscCall(poroseam::test_support::markRegionClosure(dm, cellSets, blockTag, &inBlock));
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> noise(-1.0, 1.0);
   const double dt = 0.5;
@@ -519,17 +511,8 @@ PetscErrorCode jumps(const JumpCase &c, double *max_error, double *max_gap, int 
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  std::vector<char> inBlock(pEnd - pStart, 0);
-  for (PetscInt cell = cStart; cell < cEnd; ++cell) {
-    PetscInt tag;
-    PetscCall(DMLabelGetValue(cellSets, cell, &tag));
-    if (tag != blockTag) continue;
-    PetscInt n, *pts = nullptr;
-    PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
-    for (PetscInt k = 0; k < n; ++k)
-      inBlock[pts[2 * k] - pStart] = 1;
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &pts));
-  }
+  std::vector<char> inBlock;
+  PetscCall(poroseam::test_support::markRegionClosure(dm, cellSets, blockTag, &inBlock));
   // The base moves by a quadratic field too, so that the jump is a difference of two.
   const int normal_axis = dim - 1;
   auto field = [&](const double x[3], bool block, int k) {

@@ -16,6 +16,7 @@
 //
 // Which quadratic jumps an exact solution can have (stick, slip, open, and stick with a
 // manufactured interface load), and how the bodies' fields are built: quad_patch_exact.hpp.
+#include "region_closure.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/mesh.hpp"
@@ -146,17 +147,8 @@ PetscErrorCode solvePatch(const Case &c, int order, const Exact &ex, const std::
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  std::vector<char> inBlock(pEnd - pStart, 0);
-  for (PetscInt cell = cStart; cell < cEnd; ++cell) {
-    PetscInt tag;
-    PetscCall(DMLabelGetValue(cellSets, cell, &tag));
-    if (tag != blockTag) continue;
-    PetscInt np, *pts = nullptr;
-    PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &np, &pts));
-    for (PetscInt k = 0; k < np; ++k)
-      inBlock[pts[2 * k] - pStart] = 1;
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &np, &pts));
-  }
+  std::vector<char> inBlock;
+  PetscCall(poroseam::test_support::markRegionClosure(dm, cellSets, blockTag, &inBlock));
 
   // The exact field at every displacement node (a node sits at the mean of its point's
   // vertices on these straight-sided cells; order 1: the vertices only).
