@@ -87,6 +87,12 @@ struct PointGeometry {
 double mapQuadraturePoint(const ReferenceElement &element, const double *coords, int q,
                           PointGeometry &g, bool curved = false);
 
+/// Tangents d x / d xi_k (k < e.dim) of a face element at its point q: through the vertex
+/// basis (straight face, coords nv x space) or, curved, the node basis (coords nn x space).
+/// t[k][r] for r >= space and k >= e.dim are zero.
+void surfaceTangents(const ReferenceElement &e, const double *coords, int space, int q,
+                     bool curved, double t[2][3]);
+
 /// Measure of quadrature point q of a face element (dim - 1) embedded in space of dimension
 /// `space`: the quadrature weight times the surface Jacobian (`curved`: coords are the nodes').
 double surfaceWeight(const ReferenceElement &face, const double *coords, int space, int q,

@@ -70,14 +70,13 @@ void surfaceGradients(const ReferenceElement &e, const double *x, int dim, int q
 {
   const int m = e.dim, nv = e.num_vertices;
   const double *dphi = &e.basis_derivatives[q * nv * m];
-  // The face's map: its vertices (straight), or its nodes (curved: x holds their places).
-  const int ng = curved ? e.num_nodes : nv;
-  const double *gdphi = curved ? &e.node_basis_derivatives[q * ng * m] : dphi;
-  double J[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-  for (int a = 0; a < ng; ++a)
-    for (int r = 0; r < dim; ++r)
-      for (int k = 0; k < m; ++k)
-        J[r][k] += x[a * dim + r] * gdphi[a * m + k];
+  // The face's map (its vertices, or its nodes when curved: x holds their places):
+  // J[r][k] = d x_r / d xi_k, the tangents of surfaceWeight.
+  double t[2][3], J[3][2];
+  surfaceTangents(e, x, dim, q, curved, t);
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 2; ++k)
+      J[r][k] = t[k][r];
   double G[2][2] = {{0, 0}, {0, 0}}, Ginv[2][2];
   for (int k = 0; k < m; ++k)
     for (int l = 0; l < m; ++l)

@@ -474,9 +474,6 @@ PetscErrorCode ReferenceElement::createNodal(DMPolytopeType type, ReferenceEleme
   PetscFunctionReturn(0);
 }
 
-namespace {
-/// Tangents d x / d xi_k (k < e.dim) of a face element at its point q: through the vertex
-/// basis (straight face, coords nv x space) or, curved, the node basis (coords nn x space).
 void surfaceTangents(const ReferenceElement &e, const double *coords, int space, int q,
                      bool curved, double t[2][3])
 {
@@ -491,7 +488,6 @@ void surfaceTangents(const ReferenceElement &e, const double *coords, int space,
       for (int r = 0; r < space; ++r)
         t[k][r] += coords[a * space + r] * dphi[a * e.dim + k];
 }
-} // namespace
 
 double surfaceWeight(const ReferenceElement &e, const double *coords, int space, int q,
                      bool curved)
