@@ -1,11 +1,13 @@
 #include "vertex_block_map.hpp"
 
 #include "poroseam/layout.hpp"
+#include "poroseam/mesh_points.hpp"
 #include "poroseam/nullspace.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
 #include <algorithm>
 #include <petscdmplex.h>
+#include <petscsf.h>
 
 namespace poroseam {
 namespace vertex_blocks_detail {
@@ -60,6 +62,119 @@ PetscErrorCode extendedModes(int dim, bool axisymmetric, Vec coords, std::vector
     PetscCall(VecNormalize(t[m], nullptr));
   }
   modes.assign(t, t + 2);
+  PetscFunctionReturn(0);
+}
+
+/// Bit c set when displacement component c of `point` is an unknown (not constrained).
+PetscErrorCode freeComponents(PetscSection local, PetscInt point, int dim, unsigned char *bits)
+{
+  PetscInt ncon;
+  const PetscInt *con = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscSectionGetFieldConstraintDof(local, point, kDisplacementField, &ncon));
+  if (ncon)
+    PetscCall(PetscSectionGetFieldConstraintIndices(local, point, kDisplacementField, &con));
+  *bits = 0;
+  for (int c = 0; c < dim; ++c)
+    if (std::find(con, con + ncon, c) == con + ncon) *bits |= (unsigned char)(1u << c);
+  PetscFunctionReturn(0);
+}
+
+/// Per point of the chart: `number` given on the points this rank owns (-1 elsewhere), filled
+/// in on the points other ranks own from their owners (the DM's point SF).
+PetscErrorCode shareNumbers(DM dm, PetscInt pStart, std::vector<PetscInt> &number)
+{
+  PetscSF sf;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetPointSF(dm, &sf));
+  PetscCheck(pStart == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "vertex_blocks: chart not from 0");
+  PetscInt roots;
+  PetscCall(PetscSFGetGraph(sf, &roots, nullptr, nullptr, nullptr));
+  if (roots < 0) PetscFunctionReturn(0); // one rank: no graph, every point is owned
+  PetscCall(PetscSFBcastBegin(sf, MPIU_INT, number.data(), number.data(), MPI_REPLACE));
+  PetscCall(PetscSFBcastEnd(sf, MPIU_INT, number.data(), number.data(), MPI_REPLACE));
+  PetscFunctionReturn(0);
+}
+
+/// The order-1 level of an order-2 displacement field (VertexBlockMap::OrderOneLevel): which
+/// owned nodes are vertices, the coarse numbering of vertices (owned vertices in point order,
+/// ranks in order), and for every other node the vertices of its point's closure. An edge,
+/// quadrilateral or hexahedron node sits where the bilinear/trilinear map of its vertices puts
+/// the point's centre (reference coordinates), so an order-1 field takes there the mean of its
+/// vertex values: the interpolation from order 1 to order 2.
+PetscErrorCode buildOrderOneLevel(DM dm, PetscSection local, const std::vector<PetscInt> &owned,
+                                  VertexBlockMap &map)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscInt pStart, pEnd, vStart, vEnd;
+  PetscFunctionBeginUser;
+  PetscCall(PetscSectionGetChart(local, &pStart, &pEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscInt higher = 0; // nodes on points that are not vertices (any rank: order 2)
+  for (PetscInt p = pStart; p < pEnd; ++p) {
+    PetscInt udof;
+    PetscCall(PetscSectionGetFieldDof(local, p, kDisplacementField, &udof));
+    if (udof > 0 && (p < vStart || p >= vEnd)) ++higher;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &higher, 1, MPIU_INT, MPI_MAX, comm));
+  if (!higher) PetscFunctionReturn(0); // order 1: nothing to coarsen
+  // Node numbers (the extended rows / dim) and vertex numbers (the coarse rows / dim) of the
+  // owned nodes, in the order of `owned`; then shared with the ranks that see them as ghosts.
+  std::vector<PetscInt> node_number(pEnd - pStart, -1), vertex_number(pEnd - pStart, -1);
+  // The coarse level's nodes: the vertices. (Measured and not kept: keeping the steel's
+  // order-2 nodes as well, where order-1 hexahedra lock in the skirt's bending: 3D caisson,
+  // mesh factor 2, step 1, with an LU on the coarse level 30 outer iterations per Newton
+  // iteration instead of 49, but with GAMG there 97, GAMG threshold 0.2 40, slower.)
+  auto keep = [&](PetscInt p) -> bool { return p >= vStart && p < vEnd; };
+  PetscInt owned_vertices = 0;
+  for (size_t k = 0; k < owned.size(); ++k)
+    if (keep(owned[k])) ++owned_vertices;
+  PetscInt first_vertex = 0;
+  PetscCallMPI(MPI_Exscan(&owned_vertices, &first_vertex, 1, MPIU_INT, MPI_SUM, comm));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) first_vertex = 0; // MPI_Exscan leaves rank 0's result undefined
+  PetscInt next_vertex = first_vertex;
+  for (size_t k = 0; k < owned.size(); ++k) {
+    node_number[owned[k] - pStart] = map.ext_start / map.dim + (PetscInt)k;
+    if (keep(owned[k])) vertex_number[owned[k] - pStart] = next_vertex++;
+  }
+  PetscCall(shareNumbers(dm, pStart, node_number));
+  PetscCall(shareNumbers(dm, pStart, vertex_number));
+  const int dim = map.dim;
+  auto &one = map.order_one;
+  one.coarse_of_node.assign(owned.size(), -1);
+  one.node_free.assign(owned.size(), 0);
+  one.node_vertex_start.assign(owned.size() + 1, 0);
+  std::vector<PetscInt> closure;
+  for (size_t k = 0; k < owned.size(); ++k) {
+    const PetscInt p = owned[k];
+    PetscCall(freeComponents(local, p, dim, &one.node_free[k]));
+    one.node_vertex_start[k] = (PetscInt)one.vertex_coarse.size();
+    if (keep(p)) {
+      one.coarse_of_node[k] = vertex_number[p - pStart];
+    } else {
+      PetscCall(closureVertices(dm, p, closure));
+      const size_t n = closure.size();
+      PetscCheck(n == 2 || n == 4 || n == 8, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "vertex_blocks: a displacement node on a point with %zu vertices (expected an "
+                 "edge, a quadrilateral or a hexahedron)",
+                 n);
+      for (PetscInt v : closure) {
+        const PetscInt coarse = vertex_number[v - pStart], ext = node_number[v - pStart];
+        PetscCheck(coarse >= 0 && ext >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                   "vertex_blocks: a closure vertex without a displacement node");
+        unsigned char bits;
+        PetscCall(freeComponents(local, v, dim, &bits));
+        one.vertex_coarse.push_back(coarse);
+        one.vertex_ext.push_back(ext);
+        one.vertex_free.push_back(bits);
+      }
+    }
+  }
+  one.node_vertex_start[owned.size()] = (PetscInt)one.vertex_coarse.size();
+  one.coarse_local = dim * owned_vertices;
+  one.coarse_start = dim * first_vertex;
   PetscFunctionReturn(0);
 }
 
@@ -160,6 +275,7 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
   for (PetscInt e : map->ext_of_free)
     PetscCheck(e >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "vertex_blocks: a displacement dof that belongs to no owned node");
+  PetscCall(buildOrderOneLevel(dm, local, owned, *map));
   PetscCall(extendedModes(dim, axisymmetric, ext_coords, map->ext_modes));
   map->coordinates = ext_coords;
   // The same map as a vector of the displacement block, to look up off-rank columns.

@@ -27,6 +27,23 @@ struct VertexBlockMap {
   Vec jacobian_diagonal = nullptr; ///< diag of the whole Jacobian, filled at each assembly
   Vec coordinates = nullptr;       ///< vertex coordinates in the extended numbering (dumps)
   IS displacement = nullptr;       ///< the displacement split in the whole system
+  /// At -displacement_order 2: the same field at order 1 (vertices only), the coarse level of
+  /// the order coarsening (order_coarsening.hpp). Empty at order 1.
+  struct OrderOneLevel {
+    PetscInt coarse_local = 0; ///< coarse rows on this rank (dim x owned vertices)
+    PetscInt coarse_start = 0; ///< first coarse row of this rank
+    /// Per owned node (extended numbering order): its coarse node (a vertex), or -1.
+    std::vector<PetscInt> coarse_of_node;
+    /// Per owned node that is not a vertex: the vertices of its point's closure, as
+    /// [first, next) ranges into the two arrays below (first = node_vertex_start[k]).
+    std::vector<PetscInt> node_vertex_start;
+    std::vector<PetscInt> vertex_coarse; ///< that vertex's coarse node (global)
+    std::vector<PetscInt> vertex_ext;    ///< that vertex's node in the extended numbering
+    /// Free components of each such vertex, bit c set when component c is an unknown.
+    std::vector<unsigned char> vertex_free;
+    std::vector<unsigned char> node_free; ///< per owned node: its free components, as above
+  } order_one;
+  bool quadratic() const { return !order_one.coarse_of_node.empty(); }
 };
 
 /// The map attached to the near null space of P (the displacement split's matrix); a clear

@@ -1,5 +1,6 @@
 #include "poroseam/vertex_blocks.hpp"
 
+#include "order_coarsening.hpp"
 #include "vertex_block_map.hpp"
 
 #include "poroseam/collective_check.hpp"
@@ -31,6 +32,11 @@ struct VertexBlocksPC {
   /// -<prefix>vertex_blocks_coarse_lag N: the inner multigrid's coarse levels are rebuilt at
   /// set-ups 1, N+1, 2N+1, ...; in between only its finest level takes the new operator.
   PetscInt coarse_lag = 1;
+  /// -<prefix>vertex_blocks_order_coarsening: at order 2, one geometric level from the
+  /// order-2 to the order-1 field of the same mesh above the inner PC (order_coarsening.hpp).
+  PetscBool order_coarsening = PETSC_TRUE;
+  OrderCoarsening oc;
+  bool coarsening() const { return map && map->quadratic() && order_coarsening; }
 };
 
 /// Off-rank columns of P and their extended rows, gathered once: the pattern of the Jacobian
@@ -182,36 +188,43 @@ PetscErrorCode extendedJacobianDiagonal(const VertexBlocksPC &vb, Vec *out)
   PetscFunctionReturn(0);
 }
 
-/// The near null space of the operator the PC is given: the rigid-body modes, times D^1/2
-/// when the outer solver scales the system by D^-1/2 (constrained rows: the vertex's largest).
-PetscErrorCode attachModes(VertexBlocksPC &vb)
+/// W = |diag|^1/2 of the operator the PC is given when the outer solver scales the system by
+/// D^-1/2 (constrained rows: the vertex's largest), else null: the near null space is W times
+/// the rigid-body modes, and the order coarsening scales its interpolation by it.
+PetscErrorCode extendedWeight(const VertexBlocksPC &vb, Vec *weight)
 {
   const VertexBlockMap &map = *vb.map;
   PetscBool scaled = PETSC_FALSE;
   PetscFunctionBeginUser;
+  *weight = nullptr;
   if (map.outer) PetscCall(KSPGetDiagonalScale(map.outer, &scaled));
+  if (!scaled) PetscFunctionReturn(0);
+  PetscScalar *w;
+  PetscCall(extendedJacobianDiagonal(vb, weight));
+  PetscCall(VecSqrtAbs(*weight));
+  PetscCall(VecGetArray(*weight, &w));
+  for (PetscInt v = 0; v < map.ext_local / map.dim; ++v) {
+    PetscReal largest = 0.0;
+    for (int c = 0; c < map.dim; ++c)
+      largest = std::max(largest, PetscRealPart(w[v * map.dim + c]));
+    for (int c = 0; c < map.dim; ++c)
+      if (w[v * map.dim + c] == 0.0) w[v * map.dim + c] = largest > 0.0 ? largest : 1.0;
+  }
+  PetscCall(VecRestoreArray(*weight, &w));
+  PetscFunctionReturn(0);
+}
+
+/// The near null space of the operator the PC is given: the rigid-body modes, times W
+/// (extendedWeight) when the outer solver scales the system.
+PetscErrorCode attachModes(VertexBlocksPC &vb, Vec weight)
+{
+  const VertexBlockMap &map = *vb.map;
+  PetscFunctionBeginUser;
   std::vector<Vec> modes(map.ext_modes.size());
   for (size_t m = 0; m < modes.size(); ++m) {
     PetscCall(VecDuplicate(map.ext_modes[m], &modes[m]));
     PetscCall(VecCopy(map.ext_modes[m], modes[m]));
-  }
-  if (scaled) {
-    Vec weight; // sqrt|diag|, constrained components: the vertex's largest
-    PetscScalar *w;
-    PetscCall(extendedJacobianDiagonal(vb, &weight));
-    PetscCall(VecSqrtAbs(weight));
-    PetscCall(VecGetArray(weight, &w));
-    for (PetscInt v = 0; v < map.ext_local / map.dim; ++v) {
-      PetscReal largest = 0.0;
-      for (int c = 0; c < map.dim; ++c)
-        largest = std::max(largest, PetscRealPart(w[v * map.dim + c]));
-      for (int c = 0; c < map.dim; ++c)
-        if (w[v * map.dim + c] == 0.0) w[v * map.dim + c] = largest > 0.0 ? largest : 1.0;
-    }
-    PetscCall(VecRestoreArray(weight, &w));
-    for (auto &v : modes)
-      PetscCall(VecPointwiseMult(v, v, weight));
-    PetscCall(VecDestroy(&weight));
+    if (weight) PetscCall(VecPointwiseMult(modes[m], modes[m], weight));
   }
   PetscCall(orthonormalize(modes)); // as MatNullSpaceCreate expects
   MatNullSpace space;
@@ -294,7 +307,16 @@ PetscErrorCode setUp(PC pc)
   PetscCall(PCGetOperators(pc, nullptr, &P));
   if (!vb->map) PetscCall(findMap(P, &vb->map));
   PetscCall(fillExtended(P, *vb));
-  PetscCall(attachModes(*vb));
+  Vec weight;
+  PetscCall(extendedWeight(*vb, &weight));
+  PetscCall(attachModes(*vb, weight));
+  // At order 2 the inner PC works on the order-1 operator of the same mesh.
+  Mat inner_operator = vb->ext;
+  if (vb->coarsening()) {
+    PetscCall(setUpOrderCoarsening(pc, *vb->map, vb->ext, weight, vb->oc));
+    inner_operator = vb->oc.coarse;
+  }
+  PetscCall(VecDestroy(&weight));
   if (!vb->inner) {
     const char *prefix;
     PetscCall(PCCreate(PetscObjectComm((PetscObject)pc), &vb->inner));
@@ -304,7 +326,7 @@ PetscErrorCode setUp(PC pc)
     PetscCall(PCSetType(vb->inner, PCGAMG));
     PetscCall(PCSetFromOptions(vb->inner));
   }
-  PetscCall(PCSetOperators(vb->inner, vb->ext, vb->ext));
+  PetscCall(PCSetOperators(vb->inner, inner_operator, inner_operator));
   // The lag applies to multigrid (GAMG, ML, PCMG); any other inner PC is rebuilt each time.
   PetscErrorCode (*mg_levels)(PC, PetscInt *) = nullptr;
   PetscCall(PetscObjectQueryFunction((PetscObject)vb->inner, "PCMGGetLevels_C", &mg_levels));
@@ -328,7 +350,7 @@ PetscErrorCode setUp(PC pc)
     KSP finest;
     PetscCall(PCMGGetLevels(vb->inner, &levels));
     PetscCall(PCMGGetSmoother(vb->inner, levels - 1, &finest));
-    PetscCall(KSPSetOperators(finest, vb->ext, vb->ext));
+    PetscCall(KSPSetOperators(finest, inner_operator, inner_operator));
   }
   PetscCall(PCSetUp(vb->inner));
   PetscFunctionReturn(0);
@@ -351,7 +373,10 @@ PetscErrorCode apply(PC pc, Vec x, Vec y)
     ext[map.ext_of_free[i] - ext_start] = in[i];
   PetscCall(VecRestoreArray(vb->ext_rhs, &ext));
   PetscCall(VecRestoreArrayRead(x, &in));
-  PetscCall(PCApply(vb->inner, vb->ext_rhs, vb->ext_sol));
+  if (vb->coarsening())
+    PetscCall(applyOrderCoarsening(vb->oc, vb->ext, vb->inner, vb->ext_rhs, vb->ext_sol));
+  else
+    PetscCall(PCApply(vb->inner, vb->ext_rhs, vb->ext_sol));
   const PetscScalar *sol;
   PetscScalar *out;
   PetscCall(VecGetArrayRead(vb->ext_sol, &sol));
@@ -371,6 +396,7 @@ PetscErrorCode reset(PC pc)
   PetscCall(VecDestroy(&vb->ext_rhs));
   PetscCall(VecDestroy(&vb->ext_sol));
   PetscCall(PCDestroy(&vb->inner));
+  PetscCall(destroyOrderCoarsening(vb->oc));
   vb->map = nullptr;
   vb->off_rows.clear();
   vb->off_ext.clear();
@@ -401,6 +427,16 @@ PetscErrorCode view(PC pc, PetscViewer viewer)
                                        " set-ups, the finest level at each\n",
                                        vb->coarse_lag));
     PetscCall(PetscViewerASCIIPushTab(viewer));
+    if (vb->coarsening()) {
+      PetscInt rows;
+      PetscCall(MatGetSize(vb->oc.coarse, &rows, nullptr));
+      PetscCall(PetscViewerASCIIPrintf(
+          viewer,
+          "order coarsening: smoother on the order-2 field, then the order-1 field (%" PetscInt_FMT
+          " rows) with the inner preconditioner; smoother:\n",
+          rows));
+      PetscCall(KSPView(vb->oc.fine, viewer));
+    }
     PetscCall(PCView(vb->inner, viewer));
     PetscCall(PetscViewerASCIIPopTab(viewer));
   }
@@ -411,6 +447,7 @@ PetscErrorCode setFromOptions(PC pc, PetscOptionItems *PetscOptionsObject)
 {
   auto *vb = static_cast<VertexBlocksPC *>(pc->data);
   PetscInt lag = vb->coarse_lag;
+  PetscBool coarsen = vb->order_coarsening;
   const char *prefix;
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "vertex_blocks: the displacement block by vertices");
@@ -418,7 +455,12 @@ PetscErrorCode setFromOptions(PC pc, PetscOptionItems *PetscOptionsObject)
                             "rebuild the inner multigrid's coarse levels every N set-ups (1: at "
                             "each); the finest level takes every new operator",
                             "docs/scenes.md", lag, &lag, nullptr));
+  PetscCall(PetscOptionsBool("-vertex_blocks_order_coarsening",
+                             "at -displacement_order 2: smooth the order-2 field, and hand the "
+                             "order-1 field of the same mesh to the inner PC",
+                             "docs/scenes.md", coarsen, &coarsen, nullptr));
   PetscOptionsHeadEnd();
+  vb->order_coarsening = coarsen;
   PetscCall(PCGetOptionsPrefix(pc, &prefix));
   PetscCheck(lag >= 1, PetscObjectComm((PetscObject)pc), PETSC_ERR_USER_INPUT,
              "option -%svertex_blocks_coarse_lag %" PetscInt_FMT
