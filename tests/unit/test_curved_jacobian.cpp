@@ -18,20 +18,14 @@
 // yield states). Not the apex: a single region at the apex has a zero tangent, its uu block
 // is round-off. One region, no initial stress: -initial_state geostatic refuses the
 // annulus's sloping upper boundary.
+#include "meshed_problem.hpp"
 #include "poroseam/curved_nodes.hpp"
-#include "poroseam/layout.hpp"
-#include "poroseam/mesh.hpp"
 #include "poroseam/mesh_points.hpp"
-#include "poroseam/problem.hpp"
-#include "poroseam/scene.hpp"
-
-#include "central_differences.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
 #include <random>
 #include <string>
-#include <unistd.h> // getpid: a mesh directory per test process (ctest runs them in parallel)
 
 using namespace poroseam;
 
@@ -46,10 +40,7 @@ struct CurvedCase {
   double strain[3][3];  ///< mohr_coulomb: u = strain x at every node's place
 };
 
-PetscErrorCode setOption(const char *name, const std::string &value)
-{
-  return PetscOptionsSetValue(nullptr, name, value.c_str());
-}
+using test_support::setOption;
 
 struct Result {
   double max_error[2][2] = {{0, 0}, {0, 0}};
@@ -94,10 +85,7 @@ PetscErrorCode setState(DM dm, const Problem &problem, const std::vector<double>
 
 PetscErrorCode compare(const CurvedCase &c, Result *res)
 {
-  DM dm;
-  Scene scene;
-  std::vector<PhysicalName> names;
-  int dim;
+  test_support::MeshedProblem b;
   const bool plastic = c.expected >= 0;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsClear(nullptr));
@@ -121,15 +109,11 @@ PetscErrorCode compare(const CurvedCase &c, Result *res)
     PetscCall(setOption("-region_ring_friction_angle", "30"));
     PetscCall(setOption("-region_ring_dilation_angle", "10"));
   }
-  PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
-  PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, 2.0,
-                         testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
-                         &names, &dim, scene.mesh_geometry_order));
-  PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
-  PetscCall(markLayoutLabels(dm, scene));
-  PetscCall(createSolutionSection(dm, scene));
-  Problem problem;
-  PetscCall(problem.setup(dm, scene));
+  PetscCall(b.create(2.0));
+  DM dm = b.dm;
+  const int dim = b.dim;
+  Problem &problem = b.problem;
+  Vec local = b.local, previous = b.previous;
   {
     const CurvedNodes *nodes = curvedNodes(dm);
     PetscCheck(nodes, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no curved nodes on the mesh");
@@ -145,19 +129,11 @@ PetscErrorCode compare(const CurvedCase &c, Result *res)
   // The field of every local and global dof.
   PetscSection s;
   PetscCall(DMGetLocalSection(dm, &s));
-  Vec local, rate, previous, flocal, X, Fp, Fm;
-  PetscCall(DMCreateLocalVector(dm, &local));
-  for (Vec *v : {&rate, &previous, &flocal})
-    PetscCall(VecDuplicate(local, v));
-  PetscCall(DMCreateGlobalVector(dm, &X));
-  PetscCall(VecDuplicate(X, &Fp));
-  PetscCall(VecDuplicate(X, &Fm));
-  PetscInt nl, n, pStart, pEnd, numFields;
+  PetscInt nl, pStart, pEnd, numFields;
   PetscCall(VecGetLocalSize(local, &nl));
-  PetscCall(VecGetLocalSize(X, &n));
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   PetscCall(PetscSectionGetNumFields(s, &numFields));
-  std::vector<int> fieldOfLocal(nl, 0), field(n, 0);
+  std::vector<int> fieldOfLocal(nl, 0), field;
   for (PetscInt pt = pStart; pt < pEnd; ++pt)
     for (PetscInt f = 0; f < numFields; ++f) {
       PetscInt dof, off;
@@ -166,27 +142,10 @@ PetscErrorCode compare(const CurvedCase &c, Result *res)
       for (PetscInt k = 0; k < dof; ++k)
         fieldOfLocal[off + k] = (int)f;
     }
-  {
-    Vec marker, g;
-    PetscScalar *m;
-    const PetscScalar *gm;
-    PetscCall(VecDuplicate(local, &marker));
-    PetscCall(VecGetArray(marker, &m));
-    for (PetscInt i = 0; i < nl; ++i)
-      m[i] = fieldOfLocal[i];
-    PetscCall(VecRestoreArray(marker, &m));
-    PetscCall(DMGetGlobalVector(dm, &g));
-    PetscCall(DMLocalToGlobal(dm, marker, INSERT_VALUES, g));
-    PetscCall(VecGetArrayRead(g, &gm));
-    for (PetscInt i = 0; i < n; ++i)
-      field[i] = (int)std::lround(gm[i]);
-    PetscCall(VecRestoreArrayRead(g, &gm));
-    PetscCall(DMRestoreGlobalVector(dm, &g));
-    PetscCall(VecDestroy(&marker));
-  }
+  PetscCall(b.globalFields(fieldOfLocal, &field));
 
-  // The state: Biot random (displacements of 1e-3 m, pressures 1e4 Pa about the hydrostatic
-  // ones); Mohr-Coulomb committed at 0.6 of the strain, evaluated at the full strain.
+  // The state: Biot random (displacements of 1e-3 m, pressures 1e4 Pa); Mohr-Coulomb
+  // committed at 0.6 of the strain, evaluated at the full strain.
   std::vector<double> places;
   PetscCall(displacementNodePlaces(dm, places));
   std::mt19937 rng(42);
@@ -203,59 +162,24 @@ PetscErrorCode compare(const CurvedCase &c, Result *res)
         setState(dm, problem, places, fieldOfLocal, zero, dim, 0.0, 1e-7, 1e3, rng, previous));
     PetscCall(setState(dm, problem, places, fieldOfLocal, zero, dim, 0.0, 1e-3, 1e4, rng, local));
   }
-  PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, X));
+  PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, b.X));
   const ResidualMode mode{-dt, true, dt};
-  auto rates = [&]() -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    PetscCall(VecWAXPY(rate, -1.0, previous, local));
-    PetscCall(VecScale(rate, 1.0 / dt));
-    PetscFunctionReturn(0);
-  };
-  auto residual = [&](Vec Xg, Vec Fg) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    PetscCall(DMGlobalToLocal(dm, Xg, INSERT_VALUES, local));
-    PetscCall(rates());
-    PetscCall(problem.residual(t, local, rate, mode, flocal));
-    PetscCall(VecSet(Fg, 0.0));
-    PetscCall(DMLocalToGlobal(dm, flocal, ADD_VALUES, Fg));
-    PetscFunctionReturn(0);
-  };
-  Mat J, Jd;
-  PetscCall(DMCreateMatrix(dm, &J));
-  PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
-  PetscCall(rates());
-  PetscCall(problem.jacobian(t, 1.0 / dt, local, rate, mode, J));
-  PetscCall(MatConvert(J, MATDENSE, MAT_INITIAL_MATRIX, &Jd));
-  const PetscScalar *jd;
-  PetscCall(MatDenseGetArrayRead(Jd, &jd));
-  PetscCall(poroseam::test_support::centralDifferences(
-      X, Fp, Fm, residual,
+  auto rates = [&]() { return b.ratesFromPrevious(1.0 / dt); };
+  PetscCall(b.compareBlocks(
+      t, 1.0 / dt, mode, rates,
       [&](PetscInt j) {
         return field[j] == kDisplacementField ? 1e-9 : 1e-2; /* m, Pa */
       },
-      [&](PetscInt i, PetscInt j, double fd) {
-        const int fi = field[i] != kDisplacementField, fj = field[j] != kDisplacementField;
-        double &err = res->max_error[fi][fj];
-        double &ref = res->max_entry[fi][fj];
-        err = std::max(err, std::fabs(fd - jd[i + j * n])); // column-major
-        ref = std::max(ref, std::fabs(fd));
-      }));
-  PetscCall(MatDenseRestoreArrayRead(Jd, &jd));
+      field, res->max_error, res->max_entry));
   if (plastic) {
-    PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
+    PetscCall(DMGlobalToLocal(dm, b.X, INSERT_VALUES, local));
     PetscCall(problem.visitSkeletonCells(local, [&](PetscInt, double eqps, int state) {
       res->lowest_state = std::min(res->lowest_state, state);
       res->highest_state = std::max(res->highest_state, state);
       res->lowest_plastic_strain = std::min(res->lowest_plastic_strain, eqps);
     }));
   }
-  PetscCall(MatDestroy(&Jd));
-  PetscCall(MatDestroy(&J));
-  for (Vec *v : {&local, &rate, &previous, &flocal, &X, &Fp, &Fm})
-    PetscCall(VecDestroy(v));
-  PetscCall(problem.release());
-  PetscCall(DMDestroy(&dm));
-  PetscCall(PetscOptionsClear(nullptr));
+  PetscCall(b.destroy());
   PetscFunctionReturn(0);
 }
 
