@@ -1,23 +1,23 @@
 // The assembled Jacobian of the bulk cells on curved cells (-mesh_geometry_order 2: the
-// isoparametric Q2 map, docs/elements.md "Curved geometry") against central finite
+// isoparametric Q2 / P2 map, docs/elements.md "Curved geometry") against central finite
 // differences of the assembled residual, block by block (uu, up, pu, pp) as in
 // test_biot_jacobian and test_plastic_jacobian. The bodies are the quarter annulus
-// 1 <= r <= 2 m (meshes/thick_cylinder_plane.geo) and a slab of it in 3D
-// (meshes/thick_cylinder_slab_3d.geo), 2 cells through the wall: every cell has an edge (in 3D
-// a face) on a circle or cylinder, so its map is genuinely curved (checked: second-order nodes
-// up to 0.038 m off the straight-sided places). The tangent's weights, Jacobian inverse (the
-// physical gradients of both bases) and the point's place (the axisymmetric radius) must be
-// the curved cell's, as in the residual. By hand (not kept): the tangent's weight from the
-// straight map fails every case by 3e-2 to 8e-2, its gradients from the straight map by 1e-2
-// to 1e-1 (block uu or pp).
-// Biot (gravity, Darcy flow, storage, coupling) in plane strain, axisymmetric and 3D;
-// Mohr-Coulomb (the skeleton law's tangent) on a face (plane strain, 3D) and the triaxial
-// edge (axisymmetric), with committed plastic history: the displacement is affine in the
-// nodes' curved places (so the strain is uniform on the isoparametric cells) plus a small
-// random part, and every integration point is in one regime (checked through the committed
-// yield states). Not the apex: a single region at the apex has a zero tangent, its uu block
-// is round-off. One region, no initial stress: -initial_state geostatic refuses the
-// annulus's sloping upper boundary.
+// 1 <= r <= 2 m (meshes/thick_cylinder_plane.geo, _tri: triangles) and a slab of it in 3D
+// (meshes/thick_cylinder_slab_3d.geo, _tet: tetrahedra), 2 cells through the wall: every cell
+// has an edge (in 3D a face) on a circle or cylinder, so its map is genuinely curved (checked:
+// second-order nodes up to 0.038 m off the straight-sided places). The tangent's weights,
+// Jacobian inverse (the physical gradients of both bases) and the point's place (the
+// axisymmetric radius) must be the curved cell's, as in the residual. By hand (not kept): the
+// tangent's weight from the straight map fails every quadrilateral and hexahedral case by 3e-2
+// to 8e-2, its gradients from the straight map by 1e-2 to 1e-1 (block uu or pp).
+// Biot (gravity, Darcy flow, storage, coupling) in plane strain (quadrilaterals, triangles),
+// axisymmetric and 3D (hexahedra, tetrahedra); Mohr-Coulomb (the skeleton law's tangent) on a
+// face (plane strain, 3D) and the triaxial edge (axisymmetric), with committed plastic
+// history: the displacement is affine in the nodes' curved places (so the strain is uniform
+// on the isoparametric cells) plus a small random part, and every integration point is in one
+// regime (checked through the committed yield states). Not the apex: a single region at the
+// apex has a zero tangent, its uu block is round-off. One region, no initial stress:
+// -initial_state geostatic refuses the annulus's sloping upper boundary.
 #include "meshed_problem.hpp"
 #include "poroseam/curved_nodes.hpp"
 #include "poroseam/mesh_points.hpp"
@@ -220,8 +220,10 @@ INSTANTIATE_TEST_SUITE_P(
     Order2Curved, CurvedJacobian,
     ::testing::Values(
         CurvedCase{"biot_plane_strain_quad", "thick_cylinder_plane.geo", "biot", false, -1, {}},
+        CurvedCase{"biot_plane_strain_tri", "thick_cylinder_plane_tri.geo", "biot", false, -1, {}},
         CurvedCase{"biot_axisymmetric_quad", "thick_cylinder_plane.geo", "biot", true, -1, {}},
         CurvedCase{"biot_3d_hex", "thick_cylinder_slab_3d.geo", "biot", false, -1, {}},
+        CurvedCase{"biot_3d_tet", "thick_cylinder_slab_3d_tet.geo", "biot", false, -1, {}},
         CurvedCase{"mohr_coulomb_plane_strain_face",
                    "thick_cylinder_plane.geo",
                    "mohr_coulomb",
