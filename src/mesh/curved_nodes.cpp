@@ -3,9 +3,13 @@
 
 #include <petscdmplex.h>
 
+#include <petscfe.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <set>
+#include <vector>
 
 namespace poroseam {
 namespace {
@@ -17,6 +21,89 @@ PetscErrorCode destroyTable(void *table)
 {
   delete static_cast<CurvedNodes *>(table);
   return 0;
+}
+
+/// PETSc 3.18 keeps the second-order coordinates of a simplex on the cell itself (a
+/// discontinuous field: the cell's dofs hold all its nodes, vertices included, in the order of
+/// the coordinate element's functionals, dim values each; measured on triangles and
+/// tetrahedra), not on its edges as for quadrilaterals and hexahedra. A node's reference point
+/// gives its barycentric coordinates, hence the reference vertices it lies between (two: the
+/// node of an edge at order 2), whose mean is its key. The reference vertices are found among
+/// the cell's vertices by their nodes, which must be the vertices exactly (the same file
+/// through the same reader; the reference tetrahedron lists the first two in the other order
+/// from the closure). Each edge's node is added once (`seen`).
+PetscErrorCode addSimplexNodes(DM linear, PetscDualSpace space, PetscInt cell, const double *node,
+                               PetscInt count, PetscSection lsec, const PetscScalar *l,
+                               PetscInt vStart, PetscInt vEnd, PetscInt cdim,
+                               std::set<std::vector<PetscInt>> &seen, CurvedNodes &table,
+                               char *error, size_t error_size)
+{
+  PetscInt n, *pts = nullptr, dim;
+  std::vector<PetscInt> vertices;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(linear, &dim));
+  PetscCall(DMPlexGetTransitiveClosure(linear, cell, PETSC_TRUE, &n, &pts));
+  for (PetscInt i = 0; i < n; ++i)
+    if (pts[2 * i] >= vStart && pts[2 * i] < vEnd) vertices.push_back(pts[2 * i]);
+  PetscCall(DMPlexRestoreTransitiveClosure(linear, cell, PETSC_TRUE, &n, &pts));
+  // Barycentric coordinates of every node: the reference simplex has vertex 0 at
+  // (-1, ..., -1) and vertex i at -1 + 2 e_(i-1).
+  std::vector<std::vector<double>> lambda(count, std::vector<double>(dim + 1));
+  for (PetscInt a = 0; a < count; ++a) {
+    PetscQuadrature functional;
+    const PetscReal *xi;
+    PetscCall(PetscDualSpaceGetFunctional(space, a * cdim, &functional));
+    PetscCall(PetscQuadratureGetData(functional, nullptr, nullptr, nullptr, &xi, nullptr));
+    lambda[a][0] = 1.0;
+    for (PetscInt i = 1; i <= dim; ++i) {
+      lambda[a][i] = 0.5 * (xi[i - 1] + 1.0);
+      lambda[a][0] -= lambda[a][i];
+    }
+  }
+  std::vector<PetscInt> vertexOf(dim + 1, -1); // reference vertex -> mesh vertex
+  for (PetscInt a = 0; a < count; ++a) {
+    PetscInt only = -1, nonzero = 0;
+    for (PetscInt i = 0; i <= dim; ++i)
+      if (std::fabs(lambda[a][i]) > 1e-10) only = i, ++nonzero;
+    if (nonzero != 1) continue;
+    for (PetscInt v : vertices) {
+      PetscInt qo;
+      bool same = true;
+      PetscCall(PetscSectionGetOffset(lsec, v, &qo));
+      for (PetscInt d = 0; d < cdim; ++d)
+        same = same && node[a * cdim + d] == PetscRealPart(l[qo + d]);
+      if (same) vertexOf[only] = v;
+    }
+  }
+  for (PetscInt i = 0; i <= dim; ++i)
+    if (vertexOf[i] < 0) {
+      PetscCall(PetscSNPrintf(error, error_size,
+                              "the high-order read moved a vertex of simplex %d (no vertex of "
+                              "the cell at its node %d)",
+                              (int)cell, (int)i));
+      PetscFunctionReturn(0);
+    }
+  for (PetscInt a = 0; a < count; ++a) {
+    std::vector<PetscInt> between;
+    double straight[3] = {0, 0, 0}, curved[3] = {0, 0, 0};
+    for (PetscInt i = 0; i <= dim; ++i) {
+      if (std::fabs(lambda[a][i]) < 1e-10) continue;
+      between.push_back(vertexOf[i]);
+      PetscInt qo;
+      PetscCall(PetscSectionGetOffset(lsec, vertexOf[i], &qo));
+      for (PetscInt d = 0; d < cdim; ++d)
+        straight[d] += PetscRealPart(l[qo + d]);
+    }
+    if (between.size() < 2) continue; // a vertex (checked above)
+    std::sort(between.begin(), between.end());
+    if (!seen.insert(between).second) continue;
+    for (PetscInt d = 0; d < cdim; ++d) {
+      straight[d] /= between.size();
+      curved[d] = node[a * cdim + d];
+    }
+    table.add((int)between.size(), straight, curved);
+  }
+  PetscFunctionReturn(0);
 }
 
 } // namespace
@@ -134,7 +221,8 @@ PetscErrorCode attachCurvedNodes(MPI_Comm comm, const char *msh, DM linear)
       PetscCall(PetscSectionGetOffset(lsec, v, &lo_off));
       for (PetscInt d = 0; d < cdim; ++d) {
         const double a = PetscRealPart(h[ho + d]), b = PetscRealPart(l[lo_off + d]);
-        if (hd != cdim || a != b)
+        // hd == 0: a simplex's vertex, whose node the cell holds (addSimplexNodes checks it).
+        if ((hd != cdim && hd != 0) || (hd == cdim && a != b))
           PetscCall(PetscSNPrintf(error, sizeof error, "the high-order read of %s moved vertex %d",
                                   msh, (int)v));
         lo[d] = v == vStart ? b : std::min(lo[d], b);
@@ -145,12 +233,39 @@ PetscErrorCode attachCurvedNodes(MPI_Comm comm, const char *msh, DM linear)
     for (int d = 0; d < 3; ++d)
       diameter += (hi[d] - lo[d]) * (hi[d] - lo[d]);
     tolerance = 1e-9 * std::sqrt(diameter);
-    std::vector<PetscInt> vertices;
+    std::set<std::vector<PetscInt>> seen; // simplices' edges whose node is in the table
+    PetscDualSpace space = nullptr;       // of the coordinate element (simplices)
     for (PetscInt p = pStart; p < pEnd && !error[0]; ++p) {
       if (p >= vStart && p < vEnd) continue;
       PetscInt dof, off, n, *pts = nullptr;
       PetscCall(PetscSectionGetDof(hsec, p, &dof));
       if (dof == 0) continue;
+      DMPolytopeType type;
+      PetscCall(DMPlexGetCellType(linear, p, &type));
+      if (dof > cdim && DMPolytopeTypeGetNumVertices(type) == DMPolytopeTypeGetDim(type) + 1) {
+        if (!space) {
+          DM cdm;
+          PetscObject field;
+          PetscCall(DMGetCoordinateDM(curved, &cdm));
+          PetscCall(DMGetField(cdm, 0, nullptr, &field));
+          PetscCall(PetscFEGetDualSpace((PetscFE)field, &space));
+        }
+        PetscInt functionals;
+        PetscCall(PetscDualSpaceGetDimension(space, &functionals));
+        PetscCall(PetscSectionGetOffset(hsec, p, &off));
+        if (functionals != dof) {
+          PetscCall(PetscSNPrintf(error, sizeof error,
+                                  "%s: simplex %d holds %d coordinates, its element %d", msh,
+                                  (int)p, (int)dof, (int)functionals));
+          break;
+        }
+        std::vector<double> nodes(dof);
+        for (PetscInt k = 0; k < dof; ++k)
+          nodes[k] = PetscRealPart(h[off + k]);
+        PetscCall(addSimplexNodes(linear, space, p, nodes.data(), dof / cdim, lsec, l, vStart, vEnd,
+                                  cdim, seen, *table, error, sizeof error));
+        continue;
+      }
       if (dof != cdim) {
         PetscCall(PetscSNPrintf(error, sizeof error,
                                 "%s: point %d holds %d coordinates; poroseam reads second-order "

@@ -8,20 +8,11 @@
 // a = 1.5 the back-dated gap g - dt dg/dt of the storage secant is open or, in the "opens"
 // cases, closed while the gap is open. Closed and sliding with shear dilation, h = D0 + d with
 // the dilation d following every gap component.
-#include "region_closure.hpp"
-#include "poroseam/interfaces.hpp"
-#include "poroseam/layout.hpp"
-#include "poroseam/mesh.hpp"
-#include "poroseam/problem.hpp"
-#include "poroseam/scene.hpp"
+#include "meshed_problem.hpp"
 
-#include "central_differences.hpp"
 #include <cmath>
-
 #include <gtest/gtest.h>
 #include <random>
-#include <string>
-#include <unistd.h> // getpid: a mesh directory per test process (ctest runs them in parallel)
 
 using namespace poroseam;
 
@@ -39,10 +30,7 @@ struct FlowCase {
   const char *dilation_angle = "0"; ///< psi [deg]
 };
 
-PetscErrorCode setOption(const char *name, const std::string &value)
-{
-  return PetscOptionsSetValue(nullptr, name, value.c_str());
-}
+using test_support::setOption;
 
 struct Result {
   double max_error[3][3] = {{0}};
@@ -54,30 +42,10 @@ struct Result {
 
 PetscErrorCode compare(const FlowCase &c, Result *res)
 {
-  DM dm;
-  Scene scene;
-  std::vector<PhysicalName> names;
-  int dim;
+  test_support::MeshedProblem b;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsClear(nullptr));
-  const std::string src = POROSEAM_SOURCE_DIR;
-  PetscCall(setOption("-mesh", src + "/meshes/" + c.mesh));
-  PetscCall(setOption("-regions", "base,block"));
-  for (const char *r : {"base", "block"}) {
-    const std::string p = std::string("-region_") + r + "_";
-    PetscCall(setOption((p + "material").c_str(), "biot"));
-    PetscCall(setOption((p + "E").c_str(), "1e8"));
-    PetscCall(setOption((p + "nu").c_str(), "0.25"));
-    PetscCall(setOption((p + "permeability").c_str(), "1e-11"));
-    PetscCall(setOption((p + "porosity").c_str(), "0.4"));
-    PetscCall(setOption((p + "rho_s").c_str(), "2650"));
-  }
+  PetscCall(test_support::setBlockOnBaseOptions(c.mesh, true));
   PetscCall(setOption("-gravity", "9.81"));
-  PetscCall(setOption("-interfaces", "contact"));
-  PetscCall(setOption("-interface_contact_side1", "base"));
-  PetscCall(setOption("-interface_contact_KN", "1e10"));
-  PetscCall(setOption("-interface_contact_KT", "5e9"));
-  PetscCall(setOption("-interface_contact_friction", "0.5"));
   PetscCall(setOption("-interface_contact_dilation_angle", c.dilation_angle));
   PetscCall(setOption("-interface_contact_flow", "true"));
   PetscCall(setOption("-interface_contact_D0", "1e-5"));
@@ -85,45 +53,24 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
   char t2[32];
   std::snprintf(t2, sizeof(t2), "%g", c.t2); // std::to_string would print 5e-9 as 0.000000
   PetscCall(setOption("-interface_contact_T2", t2));
-  PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
-  PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
-                         testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
-                         &names, &dim));
-  PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
-  PetscCall(splitInterfaces(&dm, scene));
-  PetscCall(markLayoutLabels(dm, scene));
-  PetscCall(createSolutionSection(dm, scene));
-  Problem problem;
-  PetscCall(problem.setup(dm, scene));
+  PetscCall(b.create(c.size_factor));
+  const int dim = b.dim;
+  Vec local = b.local, rate = b.rate, previous = b.previous;
 
   PetscSection s;
-  PetscCall(DMGetLocalSection(dm, &s));
-  Vec local, rate, previous, flocal, X, Fp, Fm;
-  PetscCall(DMCreateLocalVector(dm, &local));
-  for (Vec *v : {&rate, &previous, &flocal})
-    PetscCall(VecDuplicate(local, v));
-  PetscCall(DMCreateGlobalVector(dm, &X));
-  PetscCall(VecDuplicate(X, &Fp));
-  PetscCall(VecDuplicate(X, &Fm));
-
+  PetscCall(DMGetLocalSection(b.dm, &s));
   // Block vertices (closure of block cells) get the gap; pressures get random values.
-  DMLabel cellSets;
-  PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
-  int blockTag = 0;
-  for (const auto &n : names)
-    if (n.name == "block") blockTag = n.tag;
-  PetscInt pStart, pEnd, cStart, cEnd;
-  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscInt pStart, pEnd;
+  PetscCall(DMPlexGetChart(b.dm, &pStart, &pEnd));
   std::vector<char> inBlock;
-  PetscCall(poroseam::test_support::markRegionClosure(dm, cellSets, blockTag, &inBlock));
+  PetscCall(b.markRegion("block", &inBlock));
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> noise(-1.0, 1.0);
   const double dt = 0.5;
   std::vector<int> fieldOfLocal;
   {
     PetscScalar *u, *up;
-    PetscCall(problem.initialState(local));
+    PetscCall(b.problem.initialState(local));
     PetscCall(VecGetArray(local, &u));
     PetscCall(VecGetArray(previous, &up));
     PetscInt nl;
@@ -151,11 +98,11 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
       }
     PetscCall(VecRestoreArray(previous, &up));
     PetscCall(VecRestoreArray(local, &u));
-    PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, X));
+    PetscCall(DMLocalToGlobal(b.dm, local, INSERT_VALUES, b.X));
   }
-  PetscCall(VecWAXPY(rate, -1.0, previous, local));
-  PetscCall(VecScale(rate, c.rate_factor / dt));
-  PetscCall(problem.interfaces().visit(
+  auto rates = [&]() { return b.ratesFromPrevious(c.rate_factor / dt); };
+  PetscCall(rates());
+  PetscCall(b.problem.interfaces().visit(
       local, InterfaceRates{rate, dt}, [&](int, int, PetscInt, const InterfacePointState &st) {
         (st.opening > 0.0 ? res->open : res->closed)++;
         if (st.opening == 0.0 && st.response.dilation > 0.0 &&
@@ -165,68 +112,17 @@ PetscErrorCode compare(const FlowCase &c, Result *res)
         if (st.opening > 0.0 && std::fabs(st.aperture_rate * dt - st.opening) < 1e-3 * st.opening)
           res->back_closed++;
       }));
-  const double mass_scale = -dt * problem.massBalanceScale();
-  auto residual = [&](Vec Xg, Vec Fg) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    PetscCall(DMGlobalToLocal(dm, Xg, INSERT_VALUES, local));
-    PetscCall(VecWAXPY(rate, -1.0, previous, local));
-    PetscCall(VecScale(rate, c.rate_factor / dt));
-    PetscCall(problem.residual(0.0, local, rate, ResidualMode{mass_scale, true, dt}, flocal));
-    PetscCall(VecSet(Fg, 0.0));
-    PetscCall(DMLocalToGlobal(dm, flocal, ADD_VALUES, Fg));
-    PetscFunctionReturn(0);
-  };
+  const ResidualMode mode{-dt * b.problem.massBalanceScale(), true, dt};
   // Field of each global dof.
-  PetscInt n;
-  PetscCall(VecGetLocalSize(X, &n));
-  std::vector<int> field(n, 0);
-  {
-    Vec marker, g;
-    PetscCall(VecDuplicate(local, &marker));
-    PetscScalar *m;
-    PetscCall(VecGetArray(marker, &m));
-    for (size_t i = 0; i < fieldOfLocal.size(); ++i)
-      m[i] = fieldOfLocal[i];
-    PetscCall(VecRestoreArray(marker, &m));
-    PetscCall(DMGetGlobalVector(dm, &g));
-    PetscCall(DMLocalToGlobal(dm, marker, INSERT_VALUES, g));
-    const PetscScalar *gm;
-    PetscCall(VecGetArrayRead(g, &gm));
-    for (PetscInt i = 0; i < n; ++i)
-      field[i] = (int)std::lround(gm[i]);
-    PetscCall(VecRestoreArrayRead(g, &gm));
-    PetscCall(DMRestoreGlobalVector(dm, &g));
-    PetscCall(VecDestroy(&marker));
-  }
-  Mat J, Jd;
-  PetscCall(DMCreateMatrix(dm, &J));
-  PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
-  PetscCall(VecWAXPY(rate, -1.0, previous, local));
-  PetscCall(VecScale(rate, c.rate_factor / dt));
-  PetscCall(problem.jacobian(0.0, c.rate_factor / dt, local, rate,
-                             ResidualMode{mass_scale, true, dt}, J));
-  PetscCall(MatConvert(J, MATDENSE, MAT_INITIAL_MATRIX, &Jd));
-  const PetscScalar *jd;
-  PetscCall(MatDenseGetArrayRead(Jd, &jd));
-  PetscCall(poroseam::test_support::centralDifferences(
-      X, Fp, Fm, residual,
+  std::vector<int> field;
+  PetscCall(b.globalFields(fieldOfLocal, &field));
+  PetscCall(b.compareBlocks(
+      0.0, c.rate_factor / dt, mode, rates,
       [&](PetscInt j) {
         return field[j] == 0 ? 1e-11 : 1e-2 /* m, Pa: far below every kink distance */;
       },
-      [&](PetscInt i, PetscInt j, double fd) {
-        double &err = res->max_error[field[i]][field[j]];
-        double &ref = res->max_entry[field[i]][field[j]];
-        err = std::max(err, std::fabs(fd - jd[i + j * n]));
-        ref = std::max(ref, std::fabs(fd));
-      }));
-  PetscCall(MatDenseRestoreArrayRead(Jd, &jd));
-  PetscCall(MatDestroy(&Jd));
-  PetscCall(MatDestroy(&J));
-  for (Vec *v : {&local, &rate, &previous, &flocal, &X, &Fp, &Fm})
-    PetscCall(VecDestroy(v));
-  PetscCall(problem.release());
-  PetscCall(DMDestroy(&dm));
-  PetscCall(PetscOptionsClear(nullptr));
+      field, res->max_error, res->max_entry));
+  PetscCall(b.destroy());
   PetscFunctionReturn(0);
 }
 

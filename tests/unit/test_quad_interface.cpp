@@ -8,20 +8,11 @@
 // previous state as in a backward Euler or BDF2 step, so that storage is live.
 // The block is displaced relative to the base by a gap inside each regime, at every point that
 // carries a displacement node (vertices, edges, faces), plus a small random perturbation.
-#include "region_closure.hpp"
-#include "poroseam/interfaces.hpp"
-#include "poroseam/layout.hpp"
-#include "poroseam/mesh.hpp"
-#include "poroseam/problem.hpp"
-#include "poroseam/scene.hpp"
+#include "meshed_problem.hpp"
 
-#include "central_differences.hpp"
 #include <cmath>
-
 #include <gtest/gtest.h>
 #include <random>
-#include <string>
-#include <unistd.h> // getpid: a mesh directory per test process (ctest runs them in parallel)
 
 using namespace poroseam;
 
@@ -41,10 +32,7 @@ struct QuadCase {
   const char *geometry_order = "1"; ///< -mesh_geometry_order (2: curved faces and cells)
 };
 
-PetscErrorCode setOption(const char *name, const std::string &value)
-{
-  return PetscOptionsSetValue(nullptr, name, value.c_str());
-}
+using test_support::setOption;
 
 struct Result {
   double max_error[3][3] = {{0}};
@@ -55,33 +43,12 @@ struct Result {
 
 PetscErrorCode compare(const QuadCase &c, Result *res)
 {
-  DM dm;
-  Scene scene;
-  std::vector<PhysicalName> names;
-  int dim;
+  test_support::MeshedProblem b;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsClear(nullptr));
-  const std::string src = POROSEAM_SOURCE_DIR;
-  PetscCall(setOption("-mesh", src + "/meshes/" + c.mesh));
+  PetscCall(test_support::setBlockOnBaseOptions(c.mesh, c.flow));
   PetscCall(setOption("-displacement_order", "2"));
   PetscCall(setOption("-mesh_geometry_order", c.geometry_order));
-  PetscCall(setOption("-regions", "base,block"));
   if (c.axisymmetric) PetscCall(setOption("-axisymmetric", "true"));
-  for (const char *r : {"base", "block"}) {
-    const std::string p = std::string("-region_") + r + "_";
-    PetscCall(setOption((p + "material").c_str(), c.flow ? "biot" : "elastic"));
-    PetscCall(setOption((p + "E").c_str(), "1e8"));
-    PetscCall(setOption((p + "nu").c_str(), "0.25"));
-    if (!c.flow) continue;
-    PetscCall(setOption((p + "permeability").c_str(), "1e-11"));
-    PetscCall(setOption((p + "porosity").c_str(), "0.4"));
-    PetscCall(setOption((p + "rho_s").c_str(), "2650"));
-  }
-  PetscCall(setOption("-interfaces", "contact"));
-  PetscCall(setOption("-interface_contact_side1", "base"));
-  PetscCall(setOption("-interface_contact_KN", "1e10"));
-  PetscCall(setOption("-interface_contact_KT", "5e9"));
-  PetscCall(setOption("-interface_contact_friction", "0.5"));
   PetscCall(setOption("-interface_contact_integration", c.integration));
   PetscCall(setOption("-interface_contact_dilation_angle", c.dilation_angle));
   if (c.flow) {
@@ -91,47 +58,25 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
     PetscCall(setOption("-interface_contact_T1", "1e-8"));
     PetscCall(setOption("-interface_contact_T2", "5e-9"));
   }
-  PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
-  PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
-                         testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
-                         &names, &dim, scene.mesh_geometry_order));
-  PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
-  res->dim = dim;
-  PetscCall(splitInterfaces(&dm, scene));
-  PetscCall(markLayoutLabels(dm, scene));
-  PetscCall(createSolutionSection(dm, scene));
-  Problem problem;
-  PetscCall(problem.setup(dm, scene));
+  PetscCall(b.create(c.size_factor));
+  res->dim = b.dim;
+  Vec local = b.local, rate = b.rate, previous = b.previous;
 
   PetscSection s;
-  PetscCall(DMGetLocalSection(dm, &s));
-  Vec local, rate, previous, flocal, X, Fp, Fm;
-  PetscCall(DMCreateLocalVector(dm, &local));
-  for (Vec *v : {&rate, &previous, &flocal})
-    PetscCall(VecDuplicate(local, v));
-  PetscCall(DMCreateGlobalVector(dm, &X));
-  PetscCall(VecDuplicate(X, &Fp));
-  PetscCall(VecDuplicate(X, &Fm));
-
+  PetscCall(DMGetLocalSection(b.dm, &s));
   // Every point of the closure of the block's cells (vertices, edges, faces, cells) that
   // carries displacement gets the gap; pressures random values.
-  DMLabel cellSets;
-  PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
-  int blockTag = 0;
-  for (const auto &n : names)
-    if (n.name == "block") blockTag = n.tag;
-  PetscInt pStart, pEnd, cStart, cEnd;
-  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscInt pStart, pEnd;
+  PetscCall(DMPlexGetChart(b.dm, &pStart, &pEnd));
   std::vector<char> inBlock;
-  PetscCall(poroseam::test_support::markRegionClosure(dm, cellSets, blockTag, &inBlock));
+  PetscCall(b.markRegion("block", &inBlock));
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> noise(-1.0, 1.0);
   const double dt = 0.5;
   std::vector<int> fieldOfLocal;
   {
     PetscScalar *u, *up;
-    PetscCall(problem.initialState(local));
+    PetscCall(b.problem.initialState(local));
     PetscCall(VecGetArray(local, &u));
     PetscCall(VecGetArray(previous, &up));
     PetscInt nl;
@@ -160,80 +105,27 @@ PetscErrorCode compare(const QuadCase &c, Result *res)
       }
     PetscCall(VecRestoreArray(previous, &up));
     PetscCall(VecRestoreArray(local, &u));
-    PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, X));
+    PetscCall(DMLocalToGlobal(b.dm, local, INSERT_VALUES, b.X));
   }
-  auto rates = [&]() -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    PetscCall(VecWAXPY(rate, -1.0, previous, local));
-    PetscCall(VecScale(rate, c.rate_factor / dt));
-    PetscFunctionReturn(0);
-  };
+  auto rates = [&]() { return b.ratesFromPrevious(c.rate_factor / dt); };
   PetscCall(rates());
-  PetscCall(problem.interfaces().visit(local, InterfaceRates{c.flow ? rate : nullptr, dt},
-                                       [&](int, int, PetscInt, const InterfacePointState &st) {
-                                         ++res->states[(int)st.response.state];
-                                         res->dilated += st.response.dilation > 0.0;
-                                         ++res->points;
-                                       }));
-  const double mass_scale = c.flow ? -dt * problem.massBalanceScale() : 1.0;
+  PetscCall(b.problem.interfaces().visit(local, InterfaceRates{c.flow ? rate : nullptr, dt},
+                                         [&](int, int, PetscInt, const InterfacePointState &st) {
+                                           ++res->states[(int)st.response.state];
+                                           res->dilated += st.response.dilation > 0.0;
+                                           ++res->points;
+                                         }));
+  const double mass_scale = c.flow ? -dt * b.problem.massBalanceScale() : 1.0;
   const ResidualMode mode{mass_scale, true, dt};
-  auto residual = [&](Vec Xg, Vec Fg) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    PetscCall(DMGlobalToLocal(dm, Xg, INSERT_VALUES, local));
-    PetscCall(rates());
-    PetscCall(problem.residual(0.0, local, rate, mode, flocal));
-    PetscCall(VecSet(Fg, 0.0));
-    PetscCall(DMLocalToGlobal(dm, flocal, ADD_VALUES, Fg));
-    PetscFunctionReturn(0);
-  };
-  PetscInt n;
-  PetscCall(VecGetLocalSize(X, &n));
-  std::vector<int> field(n, 0);
-  {
-    Vec marker, g;
-    PetscCall(VecDuplicate(local, &marker));
-    PetscScalar *m;
-    PetscCall(VecGetArray(marker, &m));
-    for (size_t i = 0; i < fieldOfLocal.size(); ++i)
-      m[i] = fieldOfLocal[i];
-    PetscCall(VecRestoreArray(marker, &m));
-    PetscCall(DMGetGlobalVector(dm, &g));
-    PetscCall(DMLocalToGlobal(dm, marker, INSERT_VALUES, g));
-    const PetscScalar *gm;
-    PetscCall(VecGetArrayRead(g, &gm));
-    for (PetscInt i = 0; i < n; ++i)
-      field[i] = (int)std::lround(gm[i]);
-    PetscCall(VecRestoreArrayRead(g, &gm));
-    PetscCall(DMRestoreGlobalVector(dm, &g));
-    PetscCall(VecDestroy(&marker));
-  }
-  Mat J, Jd;
-  PetscCall(DMCreateMatrix(dm, &J));
-  PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, local));
-  PetscCall(rates());
-  PetscCall(problem.jacobian(0.0, c.rate_factor / dt, local, rate, mode, J));
-  PetscCall(MatConvert(J, MATDENSE, MAT_INITIAL_MATRIX, &Jd));
-  const PetscScalar *jd;
-  PetscCall(MatDenseGetArrayRead(Jd, &jd));
-  PetscCall(poroseam::test_support::centralDifferences(
-      X, Fp, Fm, residual,
+  std::vector<int> field;
+  PetscCall(b.globalFields(fieldOfLocal, &field));
+  PetscCall(b.compareBlocks(
+      0.0, c.rate_factor / dt, mode, rates,
       [&](PetscInt j) {
         return field[j] == 0 ? 1e-11 : 1e-2; /* m, Pa: far from every kink */
       },
-      [&](PetscInt i, PetscInt j, double fd) {
-        double &err = res->max_error[field[i]][field[j]];
-        double &ref = res->max_entry[field[i]][field[j]];
-        err = std::max(err, std::fabs(fd - jd[i + j * n]));
-        ref = std::max(ref, std::fabs(fd));
-      }));
-  PetscCall(MatDenseRestoreArrayRead(Jd, &jd));
-  PetscCall(MatDestroy(&Jd));
-  PetscCall(MatDestroy(&J));
-  for (Vec *v : {&local, &rate, &previous, &flocal, &X, &Fp, &Fm})
-    PetscCall(VecDestroy(v));
-  PetscCall(problem.release());
-  PetscCall(DMDestroy(&dm));
-  PetscCall(PetscOptionsClear(nullptr));
+      field, res->max_error, res->max_entry));
+  PetscCall(b.destroy());
   PetscFunctionReturn(0);
 }
 
@@ -469,50 +361,19 @@ double quadratic(const double x[3], int dim, int k, double mean, double amp)
 PetscErrorCode jumps(const JumpCase &c, double *max_error, double *max_gap, int states[3],
                      int *points)
 {
-  DM dm;
-  Scene scene;
-  std::vector<PhysicalName> names;
-  int dim;
+  test_support::MeshedProblem b;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsClear(nullptr));
-  const std::string src = POROSEAM_SOURCE_DIR;
-  PetscCall(setOption("-mesh", src + "/meshes/" + c.mesh));
+  PetscCall(test_support::setBlockOnBaseOptions(c.mesh, false));
   PetscCall(setOption("-displacement_order", "2"));
-  PetscCall(setOption("-regions", "base,block"));
-  for (const char *r : {"base", "block"}) {
-    const std::string p = std::string("-region_") + r + "_";
-    PetscCall(setOption((p + "material").c_str(), "elastic"));
-    PetscCall(setOption((p + "E").c_str(), "1e8"));
-    PetscCall(setOption((p + "nu").c_str(), "0.25"));
-  }
-  PetscCall(setOption("-interfaces", "contact"));
-  PetscCall(setOption("-interface_contact_side1", "base"));
-  PetscCall(setOption("-interface_contact_KN", "1e10"));
-  PetscCall(setOption("-interface_contact_KT", "5e9"));
-  PetscCall(setOption("-interface_contact_friction", "0.5"));
   PetscCall(setOption("-interface_contact_integration", c.integration));
-  PetscCall(readMeshOptions(PETSC_COMM_WORLD, scene));
-  PetscCall(loadGmshMesh(PETSC_COMM_SELF, scene.mesh_file, c.size_factor,
-                         testing::TempDir() + "poroseam_mesh_" + std::to_string(getpid()), &dm,
-                         &names, &dim));
-  PetscCall(readSceneOptions(PETSC_COMM_SELF, names, dim, scene));
-  PetscCall(splitInterfaces(&dm, scene));
-  PetscCall(markLayoutLabels(dm, scene));
-  PetscCall(createSolutionSection(dm, scene));
-  Problem problem;
-  PetscCall(problem.setup(dm, scene));
-
-  DMLabel cellSets;
-  PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
-  int blockTag = 0;
-  for (const auto &n : names)
-    if (n.name == "block") blockTag = n.tag;
-  PetscInt pStart, pEnd, cStart, cEnd, vStart, vEnd;
+  PetscCall(b.create(c.size_factor));
+  DM dm = b.dm;
+  const int dim = b.dim;
+  PetscInt pStart, pEnd, vStart, vEnd;
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   std::vector<char> inBlock;
-  PetscCall(poroseam::test_support::markRegionClosure(dm, cellSets, blockTag, &inBlock));
+  PetscCall(b.markRegion("block", &inBlock));
   // The base moves by a quadratic field too, so that the jump is a difference of two.
   const int normal_axis = dim - 1;
   auto field = [&](const double x[3], bool block, int k) {
@@ -521,9 +382,8 @@ PetscErrorCode jumps(const JumpCase &c, double *max_error, double *max_gap, int 
     const double mean = k == normal_axis ? c.normal : k == 0 ? c.slip : 0.2 * c.slip;
     return base + quadratic(x, dim, k, mean, 0.5 * std::fabs(k == normal_axis ? c.normal : c.slip));
   };
-  Vec local, coords;
+  Vec local = b.local, coords;
   PetscSection s, cs;
-  PetscCall(DMCreateLocalVector(dm, &local));
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(DMGetCoordinateSection(dm, &cs));
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
@@ -562,7 +422,7 @@ PetscErrorCode jumps(const JumpCase &c, double *max_error, double *max_gap, int 
   *max_error = *max_gap = 0.0;
   states[0] = states[1] = states[2] = 0;
   *points = 0;
-  PetscCall(problem.interfaces().visit(
+  PetscCall(b.problem.interfaces().visit(
       local, InterfaceRates{}, [&](int, int, PetscInt, const InterfacePointState &st) {
         double jump[3] = {0, 0, 0}, exact[3] = {0, 0, 0};
         for (int k = 0; k < dim; ++k)
@@ -578,10 +438,7 @@ PetscErrorCode jumps(const JumpCase &c, double *max_error, double *max_gap, int 
         ++states[(int)st.response.state];
         ++*points;
       }));
-  PetscCall(VecDestroy(&local));
-  PetscCall(problem.release());
-  PetscCall(DMDestroy(&dm));
-  PetscCall(PetscOptionsClear(nullptr));
+  PetscCall(b.destroy());
   PetscFunctionReturn(0);
 }
 
