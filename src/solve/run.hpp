@@ -1,6 +1,6 @@
-// The state of one run shared by its parts (internal to src/solve): the time-stepping loop
-// (simulation.cpp), the forces and flows it reports (run_resultants.cpp) and the control of
-// Newton's iterations (newton_control.cpp).
+// The state of one run shared by its parts (internal to src/solve): the set-up and time loop
+// (simulation.cpp), the callbacks TS calls in it (step_callbacks.cpp), the forces and flows it
+// reports (run_resultants.cpp) and the control of Newton's iterations (newton_control.cpp).
 #pragma once
 
 #include "poroseam/field_writer.hpp"
@@ -13,8 +13,8 @@
 #include "poroseam/scene.hpp"
 #include "poroseam/time_integration.hpp"
 #include "poroseam/time_series.hpp"
-#include "poroseam/unused_options.hpp"
 #include "poroseam/time_to_finish.hpp"
+#include "poroseam/unused_options.hpp"
 
 #include "progress_line.hpp"
 #include "rolling_checkpoint.hpp"
@@ -63,7 +63,7 @@ struct Run {
   /// While set (postStep), the residual copies the integrator's local rate here.
   Vec capture_rate = nullptr;
   Vec initial = nullptr; ///< local initial state
-  SteadyPressure steady;  ///< the steady pore pressure of the outputs
+  SteadyPressure steady; ///< the steady pore pressure of the outputs
   std::vector<BoundaryDofs> boundary_dofs;
   /// Per interface: its prescribed interface-pressure dofs, where water leaves along it.
   std::vector<std::vector<PetscInt>> interface_end_dofs;
@@ -126,7 +126,7 @@ struct Run {
   ProgressLine progress_line;
   bool step_abandoned = false;
   double accepted_next_dt = 0.0;
-  AttemptFailure failure; ///< why the step in progress failed so far
+  AttemptFailure failure;           ///< why the step in progress failed so far
   UnusedOptionCheck unused_options; ///< options typed that nothing reads (unused_options.hpp)
   /// Step rejections already announced by a cut-back line (cut_back_line.cpp).
   PetscInt announced_rejects = 0;
@@ -219,6 +219,18 @@ PetscErrorCode recordStep(Run &run, double t, double dt, Vec local, Vec rate, Pe
 /// TS pre-stage hook: after a rejected attempt, rank 0 prints one line naming the step, why
 /// the attempt failed, its dt and the dt of the retry. No communication.
 PetscErrorCode announceCutBack(TS ts, PetscReal stage_time);
+
+// step_callbacks.cpp: what PETSc's time stepper calls during a step (context: the Run).
+
+/// DMTS boundary-local function: the prescribed values at t and their rates.
+PetscErrorCode boundaryLocal(DM, PetscReal t, Vec local, Vec local_rate, void *ctx);
+/// DMTS implicit function: the residual at (t, local, local_rate).
+PetscErrorCode iFunctionLocal(DM, PetscReal t, Vec local, Vec local_rate, Vec f, void *ctx);
+/// DMTS implicit Jacobian: d residual / d unknowns + shift * d residual / d rates.
+PetscErrorCode iJacobianLocal(DM, PetscReal t, Vec local, Vec local_rate, PetscReal shift, Mat J,
+                              Mat P, void *ctx);
+/// TS post-step hook: records, commits and checkpoints an accepted step; sets the next step.
+PetscErrorCode postStep(TS ts);
 
 // run_ending.cpp: how the run ended.
 
