@@ -13,10 +13,11 @@ namespace poroseam {
 /// `names` receives the physical names of the file (same on every rank); `dim` the mesh
 /// dimension. A `.geo` is meshed into `work_dir`. `geometry_order` 2 (-mesh_geometry_order):
 /// a .geo is meshed with gmsh -order 2, and the DM carries the table of the high-order nodes
-/// (curved_nodes.hpp); its coordinates stay on the vertices.
+/// (curved_nodes.hpp); its coordinates stay on the vertices. `displacement_order`
+/// (-displacement_order) enters the memory estimate (mesh_limits.hpp).
 PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_factor,
                             const std::string &work_dir, DM *dm, std::vector<PhysicalName> *names,
-                            int *dim, int geometry_order = 1);
+                            int *dim, int geometry_order = 1, int displacement_order = 1);
 
 /// Distributes the mesh and replaces *dm by the distributed one; labels travel with the
 /// points. The partitioner comes from -partitioner ptscotch|metis|simple (default ptscotch;

@@ -15,12 +15,13 @@ struct MeshLimits {
   std::string preset;          ///< -solver_preset as given ("" when none)
   std::string pc_type;         ///< -pc_type as given ("" when none)
   std::string ksp_type;        ///< -ksp_type as given ("" when none)
-  long auto_threshold = 30000; ///< -solver_auto_threshold
+  long auto_threshold = 30000; ///< -solver_auto_threshold (default: by order, readMeshLimits)
   int ranks = 1;
 };
 
-/// Reads the options above (collective; -help lists them).
-PetscErrorCode readMeshLimits(MPI_Comm comm, MeshLimits *limits);
+/// Reads the options above (collective; -help lists them); `displacement_order` gives the
+/// default of -solver_auto_threshold (solver_preset.hpp).
+PetscErrorCode readMeshLimits(MPI_Comm comm, int displacement_order, MeshLimits *limits);
 
 /// The memory a run on a mesh with `nodes` vertices of dimension `dim` needs, estimated from
 /// its unknowns (at most dim + 1 per node: displacement and pressure) and the linear solver

@@ -3,7 +3,8 @@
 //   -solver_preset direct|fieldsplit|<name>   insert options/solvers/<name>.opts
 //   -solver_preset auto                       MUMPS LU (direct) unless the scene is 3D with more
 //                                             than -solver_auto_threshold unknowns (default
-//                                             30000), then the iterative fieldsplit preset;
+//                                             30000 at -displacement_order 1, 150000 at 2),
+//                                             then the iterative fieldsplit preset;
 //                                             nothing when -ksp_type or -pc_type is given (a
 //                                             preset file added with -options_file, say)
 // auto is the default: a scene that names no solver (no -solver_preset, -ksp_type, -pc_type)
@@ -35,6 +36,14 @@ bool isSolverPresetFile(const std::string &path);
 /// options poroseam's tested configurations use.
 std::vector<std::string> solverPresetOptionNames();
 
+/// -solver_auto_threshold's default at a displacement order: where the fieldsplit preset
+/// starts to be faster than MUMPS on the 3D quarter caisson (2 ranks). Order 1: 30,000 (at 37k
+/// the preset took 0.8 of MUMPS's time per step, at 5k MUMPS was faster). Order 2: 150,000;
+/// measured in one sitting (first step, mesh factors 2 and 1.5, the preset with its order
+/// coarsening): MUMPS 2.4x faster at 30k, 1.56x at 87k; the ratio falls like N^-0.4, so the two
+/// meet near 250k (extrapolated, not measured); 150k keeps MUMPS under about 10 GB.
+long defaultAutoThreshold(int displacement_order);
+
 /// The preset -solver_preset takes: `preset` as given ("" when not given: auto), or for auto
 /// "" when a solver is named (-ksp_type or -pc_type given), else "direct" or "fieldsplit" by
 /// `dim` and the global number of `unknowns` against `threshold` (-solver_auto_threshold).
@@ -46,6 +55,7 @@ std::string chosenPreset(const std::string &preset, bool solver_named, int dim, 
 /// already) and says which on stdout; *choice is that line's text for run.yaml ("preset direct
 /// (auto, the default: ...)", "as given (-pc_type lu)"). `dim` and `unknowns` (global) decide
 /// for auto. Call before the solvers read their options.
-PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns, std::string *choice);
+PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, int displacement_order, long unknowns,
+                                 std::string *choice);
 
 } // namespace poroseam

@@ -71,8 +71,8 @@ std::string runGmsh(const std::string &geo, double size_factor, const std::strin
   // puts a node on every edge, quadrangle and hexahedron, on the model's curve or surface
   // where the entity lies on one (-mesh_geometry_order 2).
   ProgramEnd end;
-  std::vector<std::string> args = {"gmsh", "-3", "-v", "1", "-format", "msh22", "-clscale",
-                                   factor, "-o", msh, geo};
+  std::vector<std::string> args = {"gmsh",     "-3",   "-v", "1", "-format", "msh22",
+                                   "-clscale", factor, "-o", msh, geo};
   if (geometry_order == 2) args.insert(args.begin() + 4, {"-order", "2"});
   const std::string why = runProgram(args, log, time_limit, &end);
   std::ostringstream limit;
@@ -150,8 +150,7 @@ std::string meshGeometry(const std::string &geo, double size_factor, const MeshL
                           "give a larger -mesh_size_factor", note);
     if (!why.empty()) return why;
   }
-  return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log", limits.time_limit,
-                 geometry_order);
+  return runGmsh(geo, size_factor, msh, work_dir + "/gmsh.log", limits.time_limit, geometry_order);
 }
 
 /// The supports' labels, as "Face Sets" holds the face groups: "Vertex Sets", the vertices of
@@ -212,14 +211,14 @@ PetscErrorCode markSupports(DM dm, const MshSummary &msh)
 
 PetscErrorCode loadGmshMesh(MPI_Comm comm, const std::string &file, double size_factor,
                             const std::string &work_dir, DM *dm, std::vector<PhysicalName> *names,
-                            int *dim, int geometry_order)
+                            int *dim, int geometry_order, int displacement_order)
 {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   // Rank 0 checks and (for .geo) meshes the file; the outcome is broadcast as text.
   MeshLimits limits;
-  PetscCall(readMeshLimits(comm, &limits));
+  PetscCall(readMeshLimits(comm, displacement_order, &limits));
   const long max_elements = limits.max_elements;
   std::string error, msh = file, note;
   std::vector<PhysicalName> found;

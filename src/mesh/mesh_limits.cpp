@@ -84,7 +84,7 @@ PetscErrorCode readNumber(const char *option, const std::string &text, double mi
 
 } // namespace
 
-PetscErrorCode readMeshLimits(MPI_Comm comm, MeshLimits *limits)
+PetscErrorCode readMeshLimits(MPI_Comm comm, int displacement_order, MeshLimits *limits)
 {
   std::string max_text = "2000000", time_text = "600";
   bool max_set = false, time_set = false;
@@ -126,7 +126,7 @@ PetscErrorCode readMeshLimits(MPI_Comm comm, MeshLimits *limits)
   if (set) limits->pc_type = buffer;
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-ksp_type", buffer, sizeof buffer, &set));
   if (set) limits->ksp_type = buffer;
-  PetscInt threshold = 30000;
+  PetscInt threshold = defaultAutoThreshold(displacement_order);
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-solver_auto_threshold", &threshold, &set));
   limits->auto_threshold = (long)threshold;
   PetscMPIInt size;

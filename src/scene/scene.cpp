@@ -100,7 +100,8 @@ PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
   PetscFunctionBeginUser;
   // The scene-wide names first: "missing option -mesh" would hide that -mseh was given.
   PetscCall(checkOptionNames(comm, SceneNames{}));
-  PetscOptionsBegin(comm, nullptr, "poroseam scene: mesh and output directory", kSceneDoc);
+  PetscOptionsBegin(comm, nullptr, "poroseam scene: mesh, element order and output directory",
+                    kSceneDoc);
   PetscCall(getString(PetscOptionsObject, "-mesh",
                       "Gmsh mesh (.msh) or geometry (.geo, meshed by gmsh) (required)",
                       scene.mesh_file, &set));
@@ -124,6 +125,20 @@ PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
                "second-order gmsh cells)",
                given);
     scene.mesh_geometry_order = (int)order;
+  }
+  // Read with the mesh: the memory estimate made before the mesh is read depends on it (the
+  // solver preset auto chooses by order, solver_preset.hpp).
+  {
+    double order = scene.displacement_order;
+    PetscCall(getReal(PetscOptionsObject, "-displacement_order",
+                      "order of the displacement elements: 1 (equal order, stabilised) or 2 "
+                      "(Taylor-Hood P2/P1, Q2/Q1; no stabilisation)",
+                      &order, nullptr));
+    char given[32];
+    std::snprintf(given, sizeof given, "%g", order); // PETSc's %g would print "3."
+    PetscCheck(order == 1.0 || order == 2.0, comm, PETSC_ERR_USER_INPUT,
+               "-displacement_order %s: expected 1 (linear) or 2 (quadratic, Taylor-Hood)", given);
+    scene.displacement_order = (int)order;
   }
   PetscCall(getString(PetscOptionsObject, "-output_dir", "directory of the results",
                       scene.output_dir, nullptr));
@@ -168,18 +183,6 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
                     nullptr));
   PetscCheck(scene.stabilization_factor >= 0.0, comm, PETSC_ERR_USER_INPUT,
              "-stabilization_factor %g: must be >= 0", scene.stabilization_factor);
-  {
-    double order = scene.displacement_order;
-    PetscCall(getReal(PetscOptionsObject, "-displacement_order",
-                      "order of the displacement elements: 1 (equal order, stabilised) or 2 "
-                      "(Taylor-Hood P2/P1, Q2/Q1; no stabilisation)",
-                      &order, nullptr));
-    char given[32];
-    std::snprintf(given, sizeof given, "%g", order); // PETSc's %g would print "3."
-    PetscCheck(order == 1.0 || order == 2.0, comm, PETSC_ERR_USER_INPUT,
-               "-displacement_order %s: expected 1 (linear) or 2 (quadratic, Taylor-Hood)", given);
-    scene.displacement_order = (int)order;
-  }
   // Isoparametric: the curved cell is mapped by the displacement's own quadratic basis.
   PetscCheck(scene.mesh_geometry_order == 1 || scene.displacement_order == 2, comm,
              PETSC_ERR_USER_INPUT,

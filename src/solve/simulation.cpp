@@ -143,7 +143,7 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
   PetscCall(beginLogPhase(run.events.mesh));
   PetscCall(loadGmshMesh(comm, run.scene.mesh_file, run.scene.mesh_size_factor,
                          run.scene.output_dir + "/mesh", &run.dm, &names, &dim,
-                         run.scene.mesh_geometry_order));
+                         run.scene.mesh_geometry_order, run.scene.displacement_order));
   PetscCall(readSceneOptions(comm, names, dim, run.scene));
   PetscCall(splitInterfaces(&run.dm, run.scene));
   PetscCall(checkBodiesSupported(run.dm, run.scene)); // no part free of every support
@@ -168,7 +168,8 @@ PetscErrorCode simulate(MPI_Comm comm, Run &run, RunRecord &record)
     unknowns += f.second;
   {
     std::string solver;
-    PetscCall(applySolverPreset(comm, run.scene.dim, unknowns, &solver));
+    PetscCall(
+        applySolverPreset(comm, run.scene.dim, run.scene.displacement_order, unknowns, &solver));
     PetscCall(record.setSolver(comm, solver));
   }
 

@@ -115,6 +115,11 @@ std::string solverPresetList()
   return list.empty() ? "(none)" : list;
 }
 
+long defaultAutoThreshold(int displacement_order)
+{
+  return displacement_order >= 2 ? 150000 : 30000;
+}
+
 std::string chosenPreset(const std::string &preset, bool solver_named, int dim, double unknowns,
                          long threshold)
 {
@@ -123,11 +128,12 @@ std::string chosenPreset(const std::string &preset, bool solver_named, int dim, 
   return dim == 3 && unknowns > threshold ? "fieldsplit" : "direct";
 }
 
-PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns, std::string *choice)
+PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, int displacement_order, long unknowns,
+                                 std::string *choice)
 {
   char buffer[256] = "auto";
   PetscBool given;
-  PetscInt threshold = 30000;
+  PetscInt threshold = defaultAutoThreshold(displacement_order);
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam solver preset", "docs/scenes.md");
   PetscCall(PetscOptionsString("-solver_preset",
@@ -137,7 +143,8 @@ PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, long unknowns, std::str
                                "when -ksp_type or -pc_type is given",
                                "docs/scenes.md", "auto", buffer, sizeof buffer, &given));
   PetscCall(PetscOptionsInt("-solver_auto_threshold",
-                            "unknowns above which auto chooses the iterative preset in 3D",
+                            "unknowns above which auto chooses the iterative preset in 3D "
+                            "(default 30000 at -displacement_order 1, 150000 at 2)",
                             "docs/scenes.md", threshold, &threshold, nullptr));
   PetscOptionsEnd();
   PetscCheck(threshold >= 0, comm, PETSC_ERR_USER_INPUT,
