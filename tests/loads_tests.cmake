@@ -13,7 +13,4 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 string(REPLACE "\n" ";" POROSEAM_LOADS_INPUT_CASES "${POROSEAM_LOADS_INPUT_CASES}")
 foreach(case ${POROSEAM_LOADS_INPUT_CASES})
   poroseam_scene_test(input.loads_${case} "input;loads" loads/loads_input.py --case ${case})
-  if(case MATCHES "_np2$")
-    set_tests_properties(input.loads_${case} PROPERTIES PROCESSORS 2)
-  endif()
 endforeach()
