@@ -42,12 +42,10 @@ set_tests_properties(input.scene_help_joint_np2 PROPERTIES LABELS "input;mpi")
 # 1 rank vs 2 ranks (MUMPS LU): time series to 1e-8, fields matched by vertex coordinates.
 foreach(case terzaghi_2d terzaghi_3d two_regions_2d)
   poroseam_scene_test(mpi.match_${case} "mpi" mpi/mpi_match.py --case ${case})
-  set_tests_properties(mpi.match_${case} PROPERTIES PROCESSORS 2)
 endforeach()
 
 # Solver presets (options/solvers/direct.opts, fieldsplit.opts) agree with MUMPS LU to 1e-6.
 foreach(case terzaghi_2d two_regions_2d elastic_2d block_shear_2d joint_column_2d joint_realistic_2d)
   poroseam_scene_test(solvers.presets_${case} "solvers" mpi/solver_presets.py --case ${case})
   poroseam_scene_test(solvers.presets_${case}_np2 "solvers;mpi" mpi/solver_presets.py --case ${case} --ranks 2)
-  set_tests_properties(solvers.presets_${case}_np2 PROPERTIES PROCESSORS 2)
 endforeach()

@@ -5,7 +5,6 @@
 foreach(case cylinder sphere slope axisymmetric table floating)
   poroseam_scene_test(loads.${case} "loads;verification" loads/loads.py --case ${case})
 endforeach()
-set_tests_properties(loads.floating PROPERTIES PROCESSORS 2)
 execute_process(COMMAND ${PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/loads/loads_input.py --list
                 OUTPUT_VARIABLE POROSEAM_LOADS_INPUT_CASES OUTPUT_STRIP_TRAILING_WHITESPACE)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
