@@ -2,4 +2,4 @@
 # CSV files and plots with finite numbers (tests/bench/smoke.py); not a timing test. Included by
 # tests/CMakeLists.txt. About 20 s on 2 cores.
 poroseam_scene_test(bench.smoke "bench" bench/smoke.py)
-set_tests_properties(bench.smoke PROPERTIES PROCESSORS 2 TIMEOUT 300)
+set_tests_properties(bench.smoke PROPERTIES TIMEOUT 300)

@@ -11,5 +11,3 @@ poroseam_scene_test(outputs.books_final_time "outputs;faults" outputs/books.py -
 poroseam_scene_test(outputs.books_final_fields "outputs;faults;cutback"
                     outputs/books.py --case final_fields)
 poroseam_scene_test(outputs.books_same_files "outputs;faults;mpi" outputs/books.py --case same_files)
-set_tests_properties(outputs.books_water_balance outputs.books_reactions outputs.books_same_files
-                     PROPERTIES PROCESSORS 2)

@@ -13,7 +13,4 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 string(REPLACE "\n" ";" POROSEAM_CURVED_INPUT_CASES "${POROSEAM_CURVED_INPUT_CASES}")
 foreach(case ${POROSEAM_CURVED_INPUT_CASES})
   poroseam_scene_test(input.${case} "input;curved" input/curved_input.py --case ${case})
-  if(case MATCHES "_np2$")
-    set_tests_properties(input.${case} PROPERTIES PROCESSORS 2)
-  endif()
 endforeach()

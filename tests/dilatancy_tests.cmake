@@ -9,4 +9,3 @@ poroseam_scene_test(interface.dilatancy_cns_limit "interface;dilatancy" interfac
 poroseam_scene_test(interface.dilatancy_cns_np2 "interface;dilatancy;mpi" interface/dilatancy.py --case cns_limit --ranks 2)
 hydraulics_test(dilatancy_flow "hydraulics;interface;dilatancy" 1 interface/dilatancy.py --case flow)
 poroseam_scene_test(restart.dilatancy_np2 "restart;interface;dilatancy;mpi" interface/dilatancy.py --case restart --ranks 2)
-set_tests_properties(interface.dilatancy_cns_np2 restart.dilatancy_np2 PROPERTIES PROCESSORS 2)

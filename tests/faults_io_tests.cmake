@@ -10,5 +10,5 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 string(REPLACE "\n" ";" POROSEAM_IO_FAULT_CASES "${POROSEAM_IO_FAULT_CASES}")
 foreach(case ${POROSEAM_IO_FAULT_CASES})
   poroseam_scene_test(faults.io_${case} "faults;mpi" input/io_faults.py --case ${case})
-  set_tests_properties(faults.io_${case} PROPERTIES PROCESSORS 2 TIMEOUT 300 SKIP_RETURN_CODE 77)
+  set_tests_properties(faults.io_${case} PROPERTIES TIMEOUT 300 SKIP_RETURN_CODE 77)
 endforeach()

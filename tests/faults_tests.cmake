@@ -10,5 +10,5 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 string(REPLACE "\n" ";" POROSEAM_STOP_CASES "${POROSEAM_STOP_CASES}")
 foreach(case ${POROSEAM_STOP_CASES})
   poroseam_scene_test(faults.stop_${case} "faults;mpi" input/stop_signals.py --case ${case})
-  set_tests_properties(faults.stop_${case} PROPERTIES PROCESSORS 2 TIMEOUT 600)
+  set_tests_properties(faults.stop_${case} PROPERTIES TIMEOUT 600)
 endforeach()

@@ -8,12 +8,11 @@
 # every hydraulics test and give the same closed-form errors. The 1-vs-2-rank comparisons stay
 # with LU (they check the partition; solvers.presets_* compare the preset with LU on 1 and 2
 # ranks).
+# ranks: the number of ranks the driver's arguments ask for (a record; every test takes one ctest
+# slot, tests/CMakeLists.txt says why).
 function(hydraulics_test name labels ranks script)
   poroseam_scene_test(hydraulics.${name} "${labels}" ${script} ${ARGN})
   poroseam_preset_test(fieldsplit hydraulics.fieldsplit.${name} "${labels};solvers" ${script} ${ARGN})
-  if(ranks GREATER 1)
-    set_tests_properties(hydraulics.${name} hydraulics.fieldsplit.${name} PROPERTIES PROCESSORS ${ranks})
-  endif()
 endfunction()
 
 # Poiseuille flow along a gap of fixed opening: Q = h^3/(12 mu_w) dp/L, exact on any mesh.
@@ -51,4 +50,3 @@ poroseam_scene_test(hydraulics.mpi_series "hydraulics;interface;mpi"
                     hydraulics/joint_column.py --case series --mpi-match --ranks 2)
 poroseam_scene_test(hydraulics.mpi_terzaghi_joint "hydraulics;interface;mpi"
                     hydraulics/joint_column.py --case terzaghi --mpi-match --ranks 2)
-set_tests_properties(hydraulics.mpi_series hydraulics.mpi_terzaghi_joint PROPERTIES PROCESSORS 2)

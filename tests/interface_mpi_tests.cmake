@@ -10,7 +10,6 @@ foreach(case shear_2d shear_3d shear_3d_tet buried_crack_2d buried_crack_3d)
   foreach(partitioner simple metis)
     poroseam_scene_test(interface.mpi_${case}_${partitioner} "interface;mpi"
                         interface_mpi/interface_mpi_match.py --case ${case} --partitioner ${partitioner})
-    set_tests_properties(interface.mpi_${case}_${partitioner} PROPERTIES PROCESSORS 2)
   endforeach()
 endforeach()
 

@@ -5,7 +5,6 @@
 foreach(case cylinder sphere slope axisymmetric table floating)
   poroseam_scene_test(loads.${case} "loads;verification" loads/loads.py --case ${case})
 endforeach()
-set_tests_properties(loads.floating PROPERTIES PROCESSORS 2)
 execute_process(COMMAND ${PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/loads/loads_input.py --list
                 OUTPUT_VARIABLE POROSEAM_LOADS_INPUT_CASES OUTPUT_STRIP_TRAILING_WHITESPACE)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
@@ -13,7 +12,4 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 string(REPLACE "\n" ";" POROSEAM_LOADS_INPUT_CASES "${POROSEAM_LOADS_INPUT_CASES}")
 foreach(case ${POROSEAM_LOADS_INPUT_CASES})
   poroseam_scene_test(input.loads_${case} "input;loads" loads/loads_input.py --case ${case})
-  if(case MATCHES "_np2$")
-    set_tests_properties(input.loads_${case} PROPERTIES PROCESSORS 2)
-  endif()
 endforeach()

@@ -17,9 +17,6 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 string(REPLACE "\n" ";" POROSEAM_ORDER_INPUT_CASES "${POROSEAM_ORDER_INPUT_CASES}")
 foreach(case ${POROSEAM_ORDER_INPUT_CASES})
   poroseam_scene_test(input.${case} "input;order" input/order_input.py --case ${case})
-  if(case MATCHES "_np2$")
-    set_tests_properties(input.${case} PROPERTIES PROCESSORS 2)
-  endif()
 endforeach()
 # The geostatic initial state at order 2, 2D and 3D layered columns.
 poroseam_scene_test(verification.order_geostatic "order;verification;geostatic"

@@ -11,14 +11,11 @@ poroseam_scene_test(outputs.meshio "outputs" outputs/outputs.py --case meshio)
 # PETSc's -ts_monitor_solution_vtk writes the displacements and pressures of fields.h5 (2 ranks).
 poroseam_scene_test(outputs.petsc_vtk "outputs;mpi" outputs/outputs.py --case petsc_vtk)
 set_tests_properties(outputs.meshio outputs.petsc_vtk PROPERTIES SKIP_RETURN_CODE 77)
-set_tests_properties(outputs.ranks outputs.petsc_vtk PROPERTIES PROCESSORS 2)
 # The time-series plots: nothing empty for a drained run, the interface flow columns drawn
 # (tests/outputs/plots.py; scripts/plot_timeseries).
 foreach(case drained interface_flow)
   poroseam_scene_test(outputs.plots_${case} "outputs" outputs/plots.py --case ${case})
-  set_tests_properties(outputs.plots_${case} PROPERTIES PROCESSORS 2)
 endforeach()
 # Recovered (continuous) stresses at the nodes against a column under its own weight, orders 1
 # and 2, 1 and 2 ranks (tests/outputs/recovered_stress.py). A few seconds.
 poroseam_scene_test(outputs.recovered_stress "outputs;order" outputs/recovered_stress.py)
-set_tests_properties(outputs.recovered_stress PROPERTIES PROCESSORS 2)

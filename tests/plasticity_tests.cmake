@@ -27,4 +27,3 @@ poroseam_scene_test(plasticity.undrained_dilatant "plasticity" plasticity/elemen
 poroseam_scene_test(plasticity.newton "plasticity" plasticity/scene.py --case newton)
 poroseam_scene_test(plasticity.ranks "plasticity;mpi" plasticity/scene.py --case ranks)
 poroseam_scene_test(plasticity.restart "plasticity;restart" plasticity/scene.py --case restart)
-set_tests_properties(plasticity.ranks PROPERTIES PROCESSORS 2)

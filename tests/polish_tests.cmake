@@ -3,6 +3,5 @@
 poroseam_scene_test(polish.interface_output_interval "polish;outputs;interface;restart"
                     polish/interface_interval.py)
 poroseam_scene_test(polish.cut_back_lines "polish;cutback;mpi" polish/cut_back_lines.py)
-set_tests_properties(polish.cut_back_lines PROPERTIES PROCESSORS 2)
 poroseam_scene_test(polish.help_listing "polish;input" polish/help_listing.py)
 poroseam_scene_test(polish.steady_pressure "polish;outputs;physics" polish/steady_pressure.py)

@@ -28,4 +28,3 @@ poroseam_scene_test(hydraulics.order2_gap_storage "hydraulics;interface;order"
 # uninterrupted run (the integration-point history of the quadratic cells), 2 ranks.
 poroseam_scene_test(restart.order2_interface_np2 "restart;interface;order;mpi"
                     interface/quad_slide.py --restart --ranks 2)
-set_tests_properties(restart.order2_interface_np2 PROPERTIES PROCESSORS 2)

@@ -14,5 +14,4 @@ foreach(case ${POROSEAM_RESTART_REFUSALS})
                       --case ${case} --ranks 1)
   poroseam_scene_test(restart.refusals_${case}_np2 "faults;restart;mpi" restart/restart_refusals.py
                       --case ${case} --ranks 2)
-  set_tests_properties(restart.refusals_${case}_np2 PROPERTIES PROCESSORS 2)
 endforeach()

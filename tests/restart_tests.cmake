@@ -9,4 +9,4 @@ poroseam_scene_test(restart.sigterm_np2 "restart;mpi;caisson" restart/restart.py
 poroseam_scene_test(restart.other_ranks "restart;mpi;input" restart/restart.py --case ranks)
 poroseam_scene_test(restart.stale_files_np2 "restart;mpi;input" restart/restart.py --case stale --ranks 2)
 set_tests_properties(restart.kill_np2 restart.sigterm_np2 restart.other_ranks restart.stale_files_np2
-                     PROPERTIES PROCESSORS 2 TIMEOUT 600)
+                     PROPERTIES TIMEOUT 600)

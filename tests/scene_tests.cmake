@@ -36,7 +36,3 @@ poroseam_scene_test(verification.stability_mandel_undrained "verification;stabil
                     verification/stability.py --case mandel_undrained)
 poroseam_scene_test(verification.stability_mandel_drained_edge "verification;stability;mandel"
                     verification/stability.py --case mandel_drained_edge)
-
-set_tests_properties(verification.terzaghi_2d_tri_np2 verification.terzaghi_3d_tet_np2
-                     verification.mandel_np2 verification.stability_first_step_tet_np2
-                     PROPERTIES PROCESSORS 2)

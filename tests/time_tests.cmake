@@ -24,7 +24,6 @@ poroseam_scene_test(verification.stability_mandel_undrained_bdf2 "verification;s
                     verification/stability.py --case mandel_undrained --ts bdf2)
 poroseam_scene_test(verification.stability_mandel_drained_edge_bdf2 "verification;stability;mandel;time"
                     verification/stability.py --case mandel_drained_edge --ts bdf2)
-set_tests_properties(verification.stability_first_step_tet_np2_bdf2 PROPERTIES PROCESSORS 2)
 
 # Adaptive steps (BDF2, error control) against fixed steps on the coarse partially drained
 # caisson: the same error within a factor 1.5 with at most half the steps.

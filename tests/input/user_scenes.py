@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The example scenes options/*.opts run as documented (label "input").
 
-    user_scenes.py [--steps 3]
+    user_scenes.py [--steps 3] [--scene NAME]   every scene, or options/NAME.opts only
+    user_scenes.py --list                       the scene names (one ctest each)
 
 Each scene is run from the repository root exactly as its header says
 (`build/poroseam -options_file options/<scene>.opts`, only -output_dir and -ts_max_time =
@@ -26,9 +27,20 @@ OUTPUT_ROOT = os.environ.get("POROSEAM_TEST_OUTPUT", "/tmp/poroseam-test-output"
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--steps", type=int, default=3)
+    ap.add_argument("--scene", help="run options/SCENE.opts only")
+    ap.add_argument("--list", action="store_true", help="print the scene names")
     a = ap.parse_args()
     scenes = sorted(glob.glob(os.path.join(SOURCE, "options", "*.opts")))
+    if a.list:
+        print("\n".join(os.path.splitext(os.path.basename(p))[0] for p in scenes))
+        return 0
     failures = []
+    if a.scene is not None:
+        path = os.path.join(SOURCE, "options", a.scene + ".opts")
+        if not os.path.isfile(path):
+            print(f"== no scene options/{a.scene}.opts")
+            return 1
+        scenes = [path]
     if not scenes:
         failures.append("no scenes in options/")
     for path in scenes:
@@ -71,7 +83,7 @@ def main():
     if failures:
         print(f"== {len(failures)} problem(s)")
         return 1
-    print(f"== all {len(scenes)} example scenes run")
+    print(f"== all {len(scenes)} example scene(s) run")
     return 0
 
 
