@@ -40,9 +40,9 @@ std::vector<std::string> solverPresetOptionNames();
 /// starts to be faster than MUMPS on the 3D quarter caisson (2 ranks). Order 1: 30,000 (at 37k
 /// the preset took 0.8 of MUMPS's time per step, at 5k MUMPS was faster). Order 2: 150,000;
 /// measured (first step, the preset with its order coarsening): MUMPS 2.9x faster at 30k (mesh
-/// factor 2, idle machine), 1.56x at 87k (factor 1.5, load 6.5); the ratio falls like N^-0.4,
-/// so the two meet near 250k (extrapolated, not measured); 150k keeps MUMPS under about 10 GB
-/// (169k unknowns took 2.8 GB per rank).
+/// factor 2, idle machine), 1.56x at 87k (factor 1.5, load 6.5), 2.4x at 169k (the graded
+/// mesh, idle: 65 s against 158 s). So the threshold is set by memory, not speed: MUMPS took
+/// 2.8 GB per rank at 169k (fieldsplit 1.3 GB), and 150k keeps it well inside a 16 GB machine.
 long defaultAutoThreshold(int displacement_order);
 
 /// The preset -solver_preset takes: `preset` as given ("" when not given: auto), or for auto
