@@ -94,6 +94,26 @@ int Scene::regionIndexOfTag(int tag) const
   return -1;
 }
 
+namespace {
+
+/// An element order, 1 or 2 (-mesh_geometry_order, -displacement_order): read as a number so
+/// that "1.5" or "3" is named in the error as given.
+PetscErrorCode readOrder(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const char *option,
+                         const char *help, const char *expected, int *order)
+{
+  double value = *order;
+  PetscFunctionBeginUser;
+  PetscCall(getReal(PetscOptionsObject, option, help, &value, nullptr));
+  char given[32];
+  std::snprintf(given, sizeof given, "%g", value); // PETSc's %g would print "3."
+  PetscCheck(value == 1.0 || value == 2.0, comm, PETSC_ERR_USER_INPUT, "%s %s: expected %s", option,
+             given, expected);
+  *order = (int)value;
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
 PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
 {
   bool set = false;
@@ -112,34 +132,17 @@ PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
                     &scene.mesh_size_factor, nullptr));
   PetscCheck(scene.mesh_size_factor > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-mesh_size_factor %g: must be > 0", scene.mesh_size_factor);
-  {
-    double order = scene.mesh_geometry_order;
-    PetscCall(getReal(PetscOptionsObject, "-mesh_geometry_order",
+  PetscCall(readOrder(PetscOptionsObject, comm, "-mesh_geometry_order",
                       "order of the cells' geometry: 1 (straight-sided) or 2 (second-order gmsh "
                       "cells, curved along curved boundaries; needs -displacement_order 2)",
-                      &order, nullptr));
-    char given[32];
-    std::snprintf(given, sizeof given, "%g", order);
-    PetscCheck(order == 1.0 || order == 2.0, comm, PETSC_ERR_USER_INPUT,
-               "-mesh_geometry_order %s: expected 1 (straight-sided cells) or 2 (curved, "
-               "second-order gmsh cells)",
-               given);
-    scene.mesh_geometry_order = (int)order;
-  }
+                      "1 (straight-sided cells) or 2 (curved, second-order gmsh cells)",
+                      &scene.mesh_geometry_order));
   // Read with the mesh: the memory estimate made before the mesh is read depends on it (the
   // solver preset auto chooses by order, solver_preset.hpp).
-  {
-    double order = scene.displacement_order;
-    PetscCall(getReal(PetscOptionsObject, "-displacement_order",
+  PetscCall(readOrder(PetscOptionsObject, comm, "-displacement_order",
                       "order of the displacement elements: 1 (equal order, stabilised) or 2 "
                       "(Taylor-Hood P2/P1, Q2/Q1; no stabilisation)",
-                      &order, nullptr));
-    char given[32];
-    std::snprintf(given, sizeof given, "%g", order); // PETSc's %g would print "3."
-    PetscCheck(order == 1.0 || order == 2.0, comm, PETSC_ERR_USER_INPUT,
-               "-displacement_order %s: expected 1 (linear) or 2 (quadratic, Taylor-Hood)", given);
-    scene.displacement_order = (int)order;
-  }
+                      "1 (linear) or 2 (quadratic, Taylor-Hood)", &scene.displacement_order));
   PetscCall(getString(PetscOptionsObject, "-output_dir", "directory of the results",
                       scene.output_dir, nullptr));
   PetscOptionsEnd();

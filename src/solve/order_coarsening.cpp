@@ -61,7 +61,11 @@ PetscErrorCode fillProlongation(const VertexBlockMap &map, Vec weight, OrderCoar
   const auto &one = map.order_one;
   const int dim = map.dim;
   const PetscScalar *w = nullptr, *wv = nullptr;
+  PetscBool filled;
   PetscFunctionBeginUser;
+  // Unscaled, P is the plain interpolation: the same values at every set-up.
+  PetscCall(MatAssembled(oc.prolongation, &filled));
+  if (!weight && filled) PetscFunctionReturn(0);
   if (weight) {
     PetscCall(VecScatterBegin(oc.gather, weight, oc.gathered, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecScatterEnd(oc.gather, weight, oc.gathered, INSERT_VALUES, SCATTER_FORWARD));

@@ -125,10 +125,10 @@ PetscErrorCode buildOrderOneLevel(DM dm, PetscSection local, const std::vector<P
   // order-2 nodes as well, where order-1 hexahedra lock in the skirt's bending: 3D caisson,
   // mesh factor 2, step 1, with an LU on the coarse level 30 outer iterations per Newton
   // iteration instead of 49, but with GAMG there 97, GAMG threshold 0.2 40, slower.)
-  auto keep = [&](PetscInt p) -> bool { return p >= vStart && p < vEnd; };
+  auto isVertex = [&](PetscInt p) { return p >= vStart && p < vEnd; };
   PetscInt owned_vertices = 0;
   for (size_t k = 0; k < owned.size(); ++k)
-    if (keep(owned[k])) ++owned_vertices;
+    if (isVertex(owned[k])) ++owned_vertices;
   PetscInt first_vertex = 0;
   PetscCallMPI(MPI_Exscan(&owned_vertices, &first_vertex, 1, MPIU_INT, MPI_SUM, comm));
   PetscMPIInt rank;
@@ -137,7 +137,7 @@ PetscErrorCode buildOrderOneLevel(DM dm, PetscSection local, const std::vector<P
   PetscInt next_vertex = first_vertex;
   for (size_t k = 0; k < owned.size(); ++k) {
     node_number[owned[k] - pStart] = map.ext_start / map.dim + (PetscInt)k;
-    if (keep(owned[k])) vertex_number[owned[k] - pStart] = next_vertex++;
+    if (isVertex(owned[k])) vertex_number[owned[k] - pStart] = next_vertex++;
   }
   PetscCall(shareNumbers(dm, pStart, node_number));
   PetscCall(shareNumbers(dm, pStart, vertex_number));
@@ -151,7 +151,7 @@ PetscErrorCode buildOrderOneLevel(DM dm, PetscSection local, const std::vector<P
     const PetscInt p = owned[k];
     PetscCall(freeComponents(local, p, dim, &one.node_free[k]));
     one.node_vertex_start[k] = (PetscInt)one.vertex_coarse.size();
-    if (keep(p)) {
+    if (isVertex(p)) {
       one.coarse_of_node[k] = vertex_number[p - pStart];
     } else {
       PetscCall(closureVertices(dm, p, closure));
@@ -248,8 +248,8 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
   PetscCall(VecGetArrayRead(coords, &x));
   for (size_t k = 0; k < owned.size(); ++k) {
     const PetscInt v = owned[k];
-    PetscInt goff, ncon;
-    const PetscInt *con = nullptr;
+    PetscInt goff;
+    unsigned char free_bits;
     double node[3];
     PetscCall(PetscSectionGetOffset(global, v, &goff));
     PetscCall(displacementNodeLocation(dm, csec, x, v, dim, node));
@@ -257,11 +257,10 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
       xc[k * dim + d] = node[d];
     // The free components are the point's first global dofs (field 0 comes first), in
     // component order, constrained ones left out.
-    PetscCall(PetscSectionGetFieldConstraintDof(local, v, kDisplacementField, &ncon));
-    if (ncon) PetscCall(PetscSectionGetFieldConstraintIndices(local, v, kDisplacementField, &con));
+    PetscCall(freeComponents(local, v, dim, &free_bits));
     PetscInt next = goff;
     for (int c = 0; c < dim; ++c) {
-      if (std::find(con, con + ncon, c) != con + ncon) continue;
+      if (!(free_bits & (1u << c))) continue;
       const PetscInt *at = std::lower_bound(free_global, free_global + nfree, next);
       PetscCheck(at != free_global + nfree && *at == next, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "vertex_blocks: displacement dof %" PetscInt_FMT " not in the split", next);

@@ -9,6 +9,7 @@
 // The block is displaced relative to the base by a gap inside each regime, at every point that
 // carries a displacement node (vertices, edges, faces), plus a small random perturbation.
 #include "meshed_problem.hpp"
+#include "poroseam/mesh_points.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -369,9 +370,8 @@ PetscErrorCode jumps(const JumpCase &c, double *max_error, double *max_gap, int 
   PetscCall(b.create(c.size_factor));
   DM dm = b.dm;
   const int dim = b.dim;
-  PetscInt pStart, pEnd, vStart, vEnd;
+  PetscInt pStart, pEnd;
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   std::vector<char> inBlock;
   PetscCall(b.markRegion("block", &inBlock));
   // The base moves by a quadratic field too, so that the jump is a difference of two.
@@ -398,21 +398,8 @@ PetscErrorCode jumps(const JumpCase &c, double *max_error, double *max_gap, int 
       PetscCall(PetscSectionGetFieldDof(s, pt, 0, &dof));
       if (!dof) continue;
       PetscCall(PetscSectionGetFieldOffset(s, pt, 0, &off));
-      // The node's position: the centroid of the point's vertices.
-      PetscInt n, *pts = nullptr, nv = 0;
-      double x[3] = {0, 0, 0};
-      PetscCall(DMPlexGetTransitiveClosure(dm, pt, PETSC_TRUE, &n, &pts));
-      for (PetscInt k = 0; k < n; ++k) {
-        if (pts[2 * k] < vStart || pts[2 * k] >= vEnd) continue;
-        PetscInt xo;
-        PetscCall(PetscSectionGetOffset(cs, pts[2 * k], &xo));
-        for (int d = 0; d < dim; ++d)
-          x[d] += xa[xo + d];
-        ++nv;
-      }
-      PetscCall(DMPlexRestoreTransitiveClosure(dm, pt, PETSC_TRUE, &n, &pts));
-      for (int d = 0; d < dim; ++d)
-        x[d] /= nv;
+      double x[3];
+      PetscCall(poroseam::displacementNodeLocation(dm, cs, xa, pt, dim, x));
       for (int k = 0; k < dim; ++k)
         u[off + k] = field(x, inBlock[pt - pStart], k);
     }

@@ -16,7 +16,6 @@
 //
 // Which quadratic jumps an exact solution can have (stick, slip, open, and stick with a
 // manufactured interface load), and how the bodies' fields are built: quad_patch_exact.hpp.
-#include "region_closure.hpp"
 #include "poroseam/interfaces.hpp"
 #include "poroseam/layout.hpp"
 #include "poroseam/mesh.hpp"
@@ -24,6 +23,7 @@
 #include "poroseam/problem.hpp"
 #include "poroseam/reference_element.hpp"
 #include "poroseam/scene.hpp"
+#include "region_closure.hpp"
 
 #include "quad_patch_exact.hpp"
 
@@ -143,10 +143,9 @@ PetscErrorCode solvePatch(const Case &c, int order, const Exact &ex, const std::
     if (nm.name == "block") blockTag = nm.tag;
     if (nm.name == "base") baseTag = nm.tag;
   }
-  PetscInt pStart, pEnd, cStart, cEnd, vStart, vEnd;
+  PetscInt pStart, pEnd, cStart, cEnd;
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   std::vector<char> inBlock;
   PetscCall(poroseam::test_support::markRegionClosure(dm, cellSets, blockTag, &inBlock));
 
@@ -175,20 +174,8 @@ PetscErrorCode solvePatch(const Case &c, int order, const Exact &ex, const std::
       PetscCall(PetscSectionGetFieldDof(s, pt, kDisplacementField, &dof));
       if (!dof) continue;
       PetscCall(PetscSectionGetFieldOffset(s, pt, kDisplacementField, &off));
-      PetscInt np, *pts = nullptr, nv = 0;
-      double x[3] = {0, 0, 0};
-      PetscCall(DMPlexGetTransitiveClosure(dm, pt, PETSC_TRUE, &np, &pts));
-      for (PetscInt k = 0; k < np; ++k) {
-        if (pts[2 * k] < vStart || pts[2 * k] >= vEnd) continue;
-        PetscInt xo;
-        PetscCall(PetscSectionGetOffset(cs, pts[2 * k], &xo));
-        for (int d = 0; d < dim; ++d)
-          x[d] += xa[xo + d];
-        ++nv;
-      }
-      PetscCall(DMPlexRestoreTransitiveClosure(dm, pt, PETSC_TRUE, &np, &pts));
-      for (int d = 0; d < dim; ++d)
-        x[d] /= nv;
+      double x[3];
+      PetscCall(poroseam::displacementNodeLocation(dm, cs, xa, pt, dim, x));
       double ue[3];
       (inBlock[pt - pStart] ? ex.block : ex.base).value(x, ue);
       for (int k = 0; k < dim; ++k)
