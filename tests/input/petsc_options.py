@@ -53,6 +53,16 @@ CASES = {
                                   ranks=2, stop=[
         "option -fieldsplit_displacement_pc_typ: no such option in this run "
         "(did you mean -fieldsplit_displacement_pc_type?)", "after the first linear solve"]),
+    # a bad value of poroseam's own PC option (vertex_blocks' order coarsening), read when the
+    # displacement split is set up
+    "order_coarsening_value": dict(
+        args=FIELDSPLIT + ["-fieldsplit_displacement_vertex_blocks_order_coarsening", "maybe"],
+        stop=["option -fieldsplit_displacement_vertex_blocks_order_coarsening maybe: expected "
+              "true or false"]),
+    "order_coarsening_value_np2": dict(
+        args=FIELDSPLIT + ["-fieldsplit_displacement_vertex_blocks_order_coarsening", "maybe"],
+        ranks=2, stop=["option -fieldsplit_displacement_vertex_blocks_order_coarsening maybe: "
+                       "expected true or false"]),
     # read by MUMPS at its first factorisation
     "mumps_icntl_144": dict(args=["-mat_mumps_icntl_144", "0"], stop=[
         "option -mat_mumps_icntl_144: no such option in this run", "after the first linear solve"]),
