@@ -8,7 +8,7 @@ endforeach()
 set_tests_properties(solve.keep_factor_linear_np2 PROPERTIES LABELS "solve;keep_factor;mpi")
 # The fieldsplit preset at -displacement_order 2 (node blocks and rigid-body modes on edge, face
 # and cell nodes) agrees with MUMPS LU to 1e-6 on 1 and 2 ranks (tests/mpi/solver_presets.py).
-foreach(case terzaghi_3d_order2 elastic_3d_order2 block_shear_3d_order2)
+foreach(case terzaghi_3d_order2 elastic_3d_order2 block_shear_3d_order2 caisson_3d_order2)
   poroseam_scene_test(solvers.presets_${case} "solvers;order" mpi/solver_presets.py --case ${case})
   poroseam_scene_test(solvers.presets_${case}_np2 "solvers;order;mpi" mpi/solver_presets.py
                       --case ${case} --ranks 2)

@@ -4,10 +4,11 @@
 foreach(case ts_dtt snes_montor ksp_typ two_typos fieldsplit_pc_typ mumps_icntl_144 unused_ok
              unused_ok_misspelt
              preset_unused_not_typed hypre_type ksp_type linesearch_type ts_type split_pc_type
-             schur_fact_type order_coarsening_value)
+             schur_fact_type order_coarsening_value stiff_ratio_value)
   poroseam_scene_test(input.petsc_options.${case} "input;options" input/petsc_options.py --case ${case})
 endforeach()
 foreach(case ksp_typ_np2 fieldsplit_pc_typ_np2 hypre_type_np2 ksp_type_np2 linesearch_type_np2
-             ts_type_np2 split_pc_type_np2 schur_fact_type_np2 order_coarsening_value_np2)
+             ts_type_np2 split_pc_type_np2 schur_fact_type_np2 order_coarsening_value_np2
+             stiff_ratio_value_np2)
   poroseam_scene_test(input.petsc_options.${case} "input;options;mpi" input/petsc_options.py --case ${case})
 endforeach()

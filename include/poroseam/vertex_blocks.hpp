@@ -20,6 +20,7 @@
 
 #include <petscdm.h>
 #include <petscksp.h>
+#include <vector>
 
 namespace poroseam {
 
@@ -33,7 +34,11 @@ PetscErrorCode registerVertexBlocksPC();
 /// scales the system, -ksp_diagonal_scale, the modes are scaled alike) and
 /// `jacobian_diagonal` the diagonal of the whole Jacobian, which the caller fills at every
 /// assembly (the outer KSP scales the matrix in place before the PC sees it).
+/// `cell_modulus` is Young's modulus [Pa] of each cell of the DM's cell stratum (0 where a
+/// cell has none, the interfaces' cohesive cells): it tells the PC which nodes belong to
+/// bodies much stiffer than the rest (stiff_bodies.hpp).
 PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displacement,
-                                  MatNullSpace modes, KSP outer, Vec jacobian_diagonal);
+                                  MatNullSpace modes, KSP outer, Vec jacobian_diagonal,
+                                  const std::vector<PetscReal> &cell_modulus);
 
 } // namespace poroseam

@@ -1,6 +1,7 @@
 #include "poroseam/nullspace.hpp"
 
 #include "poroseam/layout.hpp"
+#include "poroseam/scene.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
 #include <petscdmplex.h>
@@ -149,6 +150,25 @@ PetscErrorCode nameInnerSplits(KSP ksp, Vec, Vec, void *ctx)
   PetscFunctionReturn(0);
 }
 
+/// Young's modulus of each cell's region (0 for the interfaces' cohesive cells, which belong
+/// to no region), for the stiff bodies of vertex_blocks.
+PetscErrorCode cellModuli(DM dm, const Scene &scene, std::vector<PetscReal> &modulus)
+{
+  DMLabel cell_sets;
+  PetscInt cStart, cEnd;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscCall(DMGetLabel(dm, "Cell Sets", &cell_sets));
+  modulus.assign(cEnd - cStart, 0.0);
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscInt tag = -1;
+    if (cell_sets) PetscCall(DMLabelGetValue(cell_sets, c, &tag));
+    const int r = scene.regionIndexOfTag((int)tag);
+    if (r >= 0) modulus[c - cStart] = scene.regions[r].young;
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobian_diagonal)
@@ -171,8 +191,10 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobi
   PetscCall(displacementRigidBodyModes(dm, scene.dim, scene.axisymmetric,
                                        fields[kDisplacementField], &modes));
   PetscCall(DMCreateGlobalVector(dm, jacobian_diagonal));
+  std::vector<PetscReal> cell_modulus;
+  PetscCall(cellModuli(dm, scene, cell_modulus));
   PetscCall(attachVertexBlocks(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], modes,
-                               ksp, *jacobian_diagonal));
+                               ksp, *jacobian_diagonal, cell_modulus));
   PetscCall(PetscObjectCompose((PetscObject)fields[kDisplacementField], "nearnullspace",
                                (PetscObject)modes));
   PetscCall(MatNullSpaceDestroy(&modes));

@@ -196,12 +196,50 @@ PetscErrorCode findMap(Mat P, const VertexBlockMap **map)
   PetscFunctionReturn(0);
 }
 
+/// Per owned node: the largest Young's modulus of the cells around it. Each rank sees only its
+/// own cells, so the largest over this rank's cells is reduced onto the owner (the DM's
+/// point SF) before it is read at the owned points.
+PetscErrorCode nodeModuli(DM dm, PetscInt pStart, PetscInt pEnd, const std::vector<PetscInt> &owned,
+                          const std::vector<PetscReal> &cell_modulus, std::vector<PetscReal> &out)
+{
+  PetscInt cStart, cEnd;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscCheck((PetscInt)cell_modulus.size() == cEnd - cStart, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "vertex_blocks: %zu cell moduli for %" PetscInt_FMT " cells", cell_modulus.size(),
+             cEnd - cStart);
+  std::vector<PetscReal> modulus(pEnd - pStart, 0.0);
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    const PetscReal e = cell_modulus[c - cStart];
+    if (e <= 0.0) continue;
+    PetscInt n;
+    PetscInt *closure = nullptr;
+    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
+    for (PetscInt i = 0; i < n; ++i)
+      modulus[closure[2 * i] - pStart] = std::max(modulus[closure[2 * i] - pStart], e);
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
+  }
+  PetscSF sf;
+  PetscInt roots;
+  PetscCall(DMGetPointSF(dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, &roots, nullptr, nullptr, nullptr));
+  if (roots >= 0) { // more than one rank
+    PetscCall(PetscSFReduceBegin(sf, MPIU_REAL, modulus.data(), modulus.data(), MPI_MAX));
+    PetscCall(PetscSFReduceEnd(sf, MPIU_REAL, modulus.data(), modulus.data(), MPI_MAX));
+  }
+  out.resize(owned.size());
+  for (size_t k = 0; k < owned.size(); ++k)
+    out[k] = modulus[owned[k] - pStart];
+  PetscFunctionReturn(0);
+}
+
 } // namespace vertex_blocks_detail
 
 using namespace vertex_blocks_detail;
 
 PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displacement,
-                                  MatNullSpace modes, KSP outer, Vec jacobian_diagonal)
+                                  MatNullSpace modes, KSP outer, Vec jacobian_diagonal,
+                                  const std::vector<PetscReal> &cell_modulus)
 {
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscSection local, global, csec;
@@ -275,6 +313,7 @@ PetscErrorCode attachVertexBlocks(DM dm, int dim, bool axisymmetric, IS displace
     PetscCheck(e >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "vertex_blocks: a displacement dof that belongs to no owned node");
   PetscCall(buildOrderOneLevel(dm, local, owned, *map));
+  PetscCall(nodeModuli(dm, pStart, pEnd, owned, cell_modulus, map->node_modulus));
   PetscCall(extendedModes(dim, axisymmetric, ext_coords, map->ext_modes));
   map->coordinates = ext_coords;
   // The same map as a vector of the displacement block, to look up off-rank columns.

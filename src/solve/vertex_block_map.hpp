@@ -27,6 +27,9 @@ struct VertexBlockMap {
   Vec jacobian_diagonal = nullptr; ///< diag of the whole Jacobian, filled at each assembly
   Vec coordinates = nullptr;       ///< vertex coordinates in the extended numbering (dumps)
   IS displacement = nullptr;       ///< the displacement split in the whole system
+  /// Per owned node (extended numbering order): the largest Young's modulus [Pa] of the
+  /// cells around it, on every rank's cells (stiff_bodies.hpp).
+  std::vector<PetscReal> node_modulus;
   /// At -displacement_order 2: the same field at order 1 (vertices only), the coarse level of
   /// the order coarsening (order_coarsening.hpp). Empty at order 1.
   struct OrderOneLevel {

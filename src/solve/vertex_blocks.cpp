@@ -1,6 +1,7 @@
 #include "poroseam/vertex_blocks.hpp"
 
 #include "order_coarsening.hpp"
+#include "stiff_bodies.hpp"
 #include "vertex_block_map.hpp"
 
 #include "poroseam/collective_check.hpp"
@@ -36,6 +37,9 @@ struct VertexBlocksPC {
   /// order-2 to the order-1 field of the same mesh above the inner PC (order_coarsening.hpp).
   PetscBool order_coarsening = PETSC_TRUE;
   OrderCoarsening oc;
+  /// -<prefix>vertex_blocks_stiff_ratio: the nodes of much stiffer bodies solved exactly after
+  /// each cycle (stiff_bodies.hpp).
+  StiffBodies stiff;
   bool coarsening() const { return map && map->quadratic() && order_coarsening; }
 };
 
@@ -317,6 +321,7 @@ PetscErrorCode setUp(PC pc)
     inner_operator = vb->oc.coarse;
   }
   PetscCall(VecDestroy(&weight));
+  PetscCall(setUpStiffBodies(pc, *vb->map, vb->ext, vb->stiff));
   if (!vb->inner) {
     const char *prefix;
     PetscCall(PCCreate(PetscObjectComm((PetscObject)pc), &vb->inner));
@@ -377,6 +382,7 @@ PetscErrorCode apply(PC pc, Vec x, Vec y)
     PetscCall(applyOrderCoarsening(vb->oc, vb->ext, vb->inner, vb->ext_rhs, vb->ext_sol));
   else
     PetscCall(PCApply(vb->inner, vb->ext_rhs, vb->ext_sol));
+  PetscCall(correctStiffBodies(vb->stiff, vb->ext, vb->ext_rhs, vb->ext_sol));
   const PetscScalar *sol;
   PetscScalar *out;
   PetscCall(VecGetArrayRead(vb->ext_sol, &sol));
@@ -397,6 +403,7 @@ PetscErrorCode reset(PC pc)
   PetscCall(VecDestroy(&vb->ext_sol));
   PetscCall(PCDestroy(&vb->inner));
   PetscCall(destroyOrderCoarsening(vb->oc));
+  PetscCall(destroyStiffBodies(vb->stiff));
   vb->map = nullptr;
   vb->off_rows.clear();
   vb->off_ext.clear();
@@ -437,6 +444,13 @@ PetscErrorCode view(PC pc, PetscViewer viewer)
           rows));
       PetscCall(KSPView(vb->oc.fine, viewer));
     }
+    if (vb->stiff.block) {
+      PetscCall(PetscViewerASCIIPrintf(viewer,
+                                       "stiff bodies (E >= %g x the smallest): %" PetscInt_FMT
+                                       " rows solved after each cycle by:\n",
+                                       (double)vb->stiff.ratio, vb->stiff.total_rows));
+      PetscCall(KSPView(vb->stiff.solver, viewer));
+    }
     PetscCall(PCView(vb->inner, viewer));
     PetscCall(PetscViewerASCIIPopTab(viewer));
   }
@@ -448,6 +462,7 @@ PetscErrorCode setFromOptions(PC pc, PetscOptionItems *PetscOptionsObject)
   auto *vb = static_cast<VertexBlocksPC *>(pc->data);
   PetscInt lag = vb->coarse_lag;
   PetscBool coarsen = vb->order_coarsening;
+  PetscReal ratio = vb->stiff.ratio;
   const char *prefix;
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "vertex_blocks: the displacement block by vertices");
@@ -459,9 +474,18 @@ PetscErrorCode setFromOptions(PC pc, PetscOptionItems *PetscOptionsObject)
                              "at -displacement_order 2: smooth the order-2 field, and hand the "
                              "order-1 field of the same mesh to the inner PC",
                              "docs/scenes.md", coarsen, &coarsen, nullptr));
+  PetscCall(PetscOptionsReal("-vertex_blocks_stiff_ratio",
+                             "solve the nodes of cells with E >= this x the smallest E exactly "
+                             "after each cycle (0: off)",
+                             "docs/scenes.md", ratio, &ratio, nullptr));
   PetscOptionsHeadEnd();
   vb->order_coarsening = coarsen;
   PetscCall(PCGetOptionsPrefix(pc, &prefix));
+  PetscCheck(ratio == 0.0 || ratio >= 1.0, PetscObjectComm((PetscObject)pc), PETSC_ERR_USER_INPUT,
+             "option -%svertex_blocks_stiff_ratio %g: expected 0 (off) or a ratio of Young's "
+             "moduli >= 1",
+             prefix ? prefix : "", (double)ratio);
+  vb->stiff.ratio = ratio;
   PetscCheck(lag >= 1, PetscObjectComm((PetscObject)pc), PETSC_ERR_USER_INPUT,
              "option -%svertex_blocks_coarse_lag %" PetscInt_FMT
              ": expected a number of set-ups >= 1",

@@ -63,6 +63,16 @@ CASES = {
         args=FIELDSPLIT + ["-fieldsplit_displacement_vertex_blocks_order_coarsening", "maybe"],
         ranks=2, stop=["option -fieldsplit_displacement_vertex_blocks_order_coarsening maybe: "
                        "expected true or false"]),
+    # the stiff bodies' ratio of Young's moduli (src/solve/stiff_bodies.hpp): below 1 every
+    # node would be "stiff"
+    "stiff_ratio_value": dict(
+        args=FIELDSPLIT + ["-fieldsplit_displacement_vertex_blocks_stiff_ratio", "0.5"],
+        stop=["option -fieldsplit_displacement_vertex_blocks_stiff_ratio 0.5: expected 0 (off) "
+              "or a ratio of Young's moduli >= 1"]),
+    "stiff_ratio_value_np2": dict(
+        args=FIELDSPLIT + ["-fieldsplit_displacement_vertex_blocks_stiff_ratio", "0.5"],
+        ranks=2, stop=["option -fieldsplit_displacement_vertex_blocks_stiff_ratio 0.5: expected "
+                       "0 (off) or a ratio of Young's moduli >= 1"]),
     # read by MUMPS at its first factorisation
     "mumps_icntl_144": dict(args=["-mat_mumps_icntl_144", "0"], stop=[
         "option -mat_mumps_icntl_144: no such option in this run", "after the first linear solve"]),
