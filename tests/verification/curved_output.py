@@ -16,7 +16,8 @@ the circles the meshes are built on (a = 1, c = 1.5, b = 2 m, centre at the orig
     would fail on them.
 --case penalty: the height h = volume / face length of the bulk cell beside an interface face,
     printed by the soft-penalty warning. Two rings joined on r = c (meshes/two_rings_plane.geo,
-    one cell through each ring, 4 around the quarter: -mesh_size_factor 2); the smallest h is
+    one cell through each ring, 4 around the quarter: -mesh_size_factor 2; and its slab of
+    hexahedra, meshes/two_rings_slab_3d.geo, one layer, the same h); the smallest h is
     the inner ring's, an annular sector of angle theta = pi / 8 between r = a and r = c over its
     arc: h = (c^2 - a^2) / (2 c) curved; the straight-sided trapezoid over its chord gives
     cos(theta / 2) times that (1.9e-2 less). Both within 2.5e-4 of their closed forms (h is
@@ -122,11 +123,17 @@ def fields_case(chk):
               -inside, -1e-3)
 
 
-def penalty_h(order):
-    out = common.output_dir(f"curved_output_penalty_g{order}")
+SLAB = ["-mesh", "meshes/two_rings_slab_3d.geo", "-boundaries",
+        "inner,outer,sym_x,sym_y,bottom,top", "-bc_bottom_uz", 0, "-bc_top_uz", 0,
+        "-probe_in", "0.7071067811865476,0.7071067811865476,0.1",
+        "-probe_out", "1.4142135623730951,1.4142135623730951,0.1"]
+
+
+def penalty_h(name, order, args):
+    out = common.output_dir(f"curved_output_penalty_{name}_g{order}")
     common.run(common.scene_path("curved_rings.opts"), out,
-               ["-mesh_size_factor", 2, "-mesh_geometry_order", order, "-interface_joint_KN",
-                1e5, "-interface_joint_KT", 1e5])
+               args + ["-mesh_geometry_order", order, "-interface_joint_KN", 1e5,
+                       "-interface_joint_KT", 1e5])
     with open(os.path.join(out, "log.txt")) as log:
         text = log.read()
     found = re.search(r"K_N = \S+ Pa/m is soft for its mesh: .*?\(h = (\S+) m", text)
@@ -138,13 +145,16 @@ def penalty_h(order):
 def penalty_case(chk):
     exact = (C**2 - A**2) / (2 * C)
     theta = (math.pi / 2) / 4
-    curved, straight = penalty_h(2), penalty_h(1)
-    print(f"  h: curved {curved}, straight {straight} m; closed forms {exact:.6f} (curved), "
-          f"{exact * math.cos(theta / 2):.6f} (straight)")
-    chk.check("penalty warning, curved: |h / ((c^2 - a^2) / (2 c)) - 1|", abs(curved / exact - 1),
-              2.5e-4)
-    chk.check("penalty warning, straight: |h / ((c^2 - a^2) / (2 c) cos(theta / 2)) - 1|",
-              abs(straight / (exact * math.cos(theta / 2)) - 1), 2.5e-4)
+    # The plane rings (one cell through each at factor 2) and their slab of hexahedra (one
+    # layer: the same h over a quadrilateral face on the cylinder r = c).
+    for name, args in (("plane", ["-mesh_size_factor", 2]), ("slab", SLAB)):
+        curved, straight = penalty_h(name, 2, args), penalty_h(name, 1, args)
+        print(f"  {name}: h curved {curved}, straight {straight} m; closed forms {exact:.6f} "
+              f"(curved), {exact * math.cos(theta / 2):.6f} (straight)")
+        chk.check(f"{name}, curved: |h / ((c^2 - a^2) / (2 c)) - 1|", abs(curved / exact - 1),
+                  2.5e-4)
+        chk.check(f"{name}, straight: |h / ((c^2 - a^2) / (2 c) cos(theta / 2)) - 1|",
+                  abs(straight / (exact * math.cos(theta / 2)) - 1), 2.5e-4)
 
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
