@@ -21,7 +21,11 @@ the circles the meshes are built on (a = 1, c = 1.5, b = 2 m, centre at the orig
     the inner ring's, an annular sector of angle theta = pi / 8 between r = a and r = c over its
     arc: h = (c^2 - a^2) / (2 c) curved; the straight-sided trapezoid over its chord gives
     cos(theta / 2) times that (1.9e-2 less). Both within 2.5e-4 of their closed forms (h is
-    printed with 4 digits: 1.2e-4; the isoparametric arcs: 3e-5, measured).
+    printed with 4 digits: 1.2e-4; the isoparametric arcs: 3e-5, measured). On triangles
+    (meshes/two_rings_plane_tri.geo, factor 2) the smallest h = 2 A / L is the outer ring's
+    triangle over the joint's edge, compared with the closed form of the isoparametric triangle
+    itself (its base the parabola through the edge's three nodes: 1.9e-4 off the circle's) and,
+    straight-sided, (b - c) cos(theta / 2).
 """
 import argparse
 import glob
@@ -142,12 +146,38 @@ def penalty_h(name, order, args):
     return float(found.group(1))
 
 
+def parabola_height(theta):
+    """h = 2 area / base of the triangle of the outer ring beside the interface (base: the
+    joint's edge, chord L = 2 c sin(theta / 2); apex on r = b, (b - c) cos(theta / 2) from the
+    chord's line), curved: its base is the parabola through the edge's ends and its node on the
+    arc (sagitta s = c (1 - cos(theta / 2))), which bulges into the triangle by the parabolic
+    segment's area 2 L s / 3, over the parabola's length."""
+    L = 2 * C * math.sin(theta / 2)
+    s = C * (1 - math.cos(theta / 2))
+    area = 0.5 * L * (B - C) * math.cos(theta / 2) - 2 * L * s / 3
+    q = math.sqrt(L**2 + 16 * s**2)
+    length = q / 2 + L**2 / (8 * s) * math.log((4 * s + q) / L)
+    return 2 * area / length, (B - C) * math.cos(theta / 2)
+
+
 def penalty_case(chk):
     exact = (C**2 - A**2) / (2 * C)
     theta = (math.pi / 2) / 4
+    # Triangles: the smallest h is the outer ring's triangle over the joint's edge.
+    tri_curved, tri_straight = parabola_height(theta)
+    curved = penalty_h("triangles", 2, ["-mesh", "meshes/two_rings_plane_tri.geo",
+                                        "-mesh_size_factor", 2])
+    straight = penalty_h("triangles", 1, ["-mesh", "meshes/two_rings_plane_tri.geo",
+                                          "-mesh_size_factor", 2])
+    print(f"  triangles: h curved {curved}, straight {straight} m; closed forms "
+          f"{tri_curved:.6f} (curved: 2 A / L), {tri_straight:.6f} (straight)")
+    chk.check("triangles, curved: |h / (2 A / L of the parabola-sided triangle) - 1|",
+              abs(curved / tri_curved - 1), 2.5e-4)
+    chk.check("triangles, straight: |h / ((b - c) cos(theta / 2)) - 1|",
+              abs(straight / tri_straight - 1), 2.5e-4)
     # The plane rings (one cell through each at factor 2) and their slab of hexahedra (one
     # layer: the same h over a quadrilateral face on the cylinder r = c).
-    for name, args in (("plane", ["-mesh_size_factor", 2]), ("slab", SLAB)):
+    for name, args in (("quadrilaterals", ["-mesh_size_factor", 2]), ("hexahedra", SLAB)):
         curved, straight = penalty_h(name, 2, args), penalty_h(name, 1, args)
         print(f"  {name}: h curved {curved}, straight {straight} m; closed forms {exact:.6f} "
               f"(curved), {exact * math.cos(theta / 2):.6f} (straight)")
