@@ -2,7 +2,8 @@
 // (inner_ring) and c <= r <= b (outer_ring), x >= 0, y >= 0. With stiff contact they are
 // Lame's one cylinder a <= r <= b; the interface is a quarter circle (curved faces,
 // -mesh_geometry_order 2, docs/elements.md). Physical curves: inner (r = a), outer (r = b),
-// joint (r = c), sym_x (x = 0), sym_y (y = 0). Quadrilaterals; counts scale with -clscale.
+// joint (r = c), sym_x (x = 0), sym_y (y = 0). Quadrilaterals unless -setnumber triangles 1
+// (meshes/two_rings_plane_tri.geo); counts scale with -clscale.
 a = 1.0; c = 1.5; b = 2.0;
 If (!Exists(n)) n = 2; EndIf   // divisions through each ring; 4 n around the quarter
 f = Mesh.CharacteristicLengthFactor;
@@ -17,7 +18,8 @@ Curve Loop(2) = {2, 7, 3, -6}; Plane Surface(2) = {2};
 Transfinite Curve{1, 2, 3, 4} = N + 1;
 Transfinite Curve{5, 6, 7} = 4 * N + 1;
 Transfinite Surface{1, 2};
-Recombine Surface{1, 2};
+If (!Exists(triangles)) triangles = 0; EndIf
+If (!triangles) Recombine Surface{1, 2}; EndIf
 Physical Curve("sym_y") = {1, 2};
 Physical Curve("sym_x") = {3, 4};
 Physical Curve("inner") = {5};

@@ -3,12 +3,17 @@
 // too stiff: conditioning). One line per interface and stiffness, from rank 0.
 #include "poroseam/penalty_check.hpp"
 
+#include "poroseam/curved_nodes.hpp"
 #include "poroseam/interfaces.hpp"
+#include "poroseam/mesh_points.hpp"
 #include "poroseam/penalty_advice.hpp"
+#include "poroseam/reference_element.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <petscdmplex.h>
 #include <vector>
 
@@ -24,15 +29,87 @@ struct Extremes {
   double stiff_h = 0.0, stiff_E = 0.0, stiff_E_soft = 0.0; ///< E_soft: for the advised range
 };
 
+/// Measure of a curved cell or face (-mesh_geometry_order 2): its quadrature through the
+/// isoparametric map of its nodes. A node's place is found in the table by the place its
+/// straight-sided point would have (the vertex basis at the node's reference point: the mean
+/// of the vertices it lies between), so the element's own node numbering is all it needs.
+/// `space`: the coordinate dimension (a face is one dimension lower).
+PetscErrorCode curvedMeasure(DM dm, const CurvedNodes &nodes, PetscInt point, int space,
+                             std::map<DMPolytopeType, ReferenceElement> &elements, double *measure)
+{
+  DMPolytopeType type;
+  PetscSection csec;
+  Vec coords;
+  const PetscScalar *ca;
+  std::vector<PetscInt> vertices;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetCellType(dm, point, &type));
+  if (!elements.count(type)) PetscCall(ReferenceElement::create(type, &elements[type], 2));
+  const ReferenceElement &e = elements[type];
+  PetscCall(closureVertices(dm, point, vertices));
+  PetscCheck((int)vertices.size() == e.num_vertices, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "penalty check: point %" PetscInt_FMT " has %zu vertices, its element %d", point,
+             vertices.size(), e.num_vertices);
+  PetscCall(DMGetCoordinateSection(dm, &csec));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(VecGetArrayRead(coords, &ca));
+  std::vector<double> xv(e.num_vertices * space), xn(e.num_nodes * space), phi(e.num_vertices);
+  for (int a = 0; a < e.num_vertices; ++a) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(csec, vertices[a], &off));
+    for (int d = 0; d < space; ++d)
+      xv[a * space + d] = PetscRealPart(ca[off + d]);
+  }
+  PetscCall(VecRestoreArrayRead(coords, &ca));
+  for (int a = 0; a < e.num_nodes; ++a) {
+    e.evaluate(&e.node_coords[a * e.dim], phi.data(), nullptr);
+    double straight[3] = {0, 0, 0}, curved[3] = {0, 0, 0};
+    int corners = 0;
+    for (int v = 0; v < e.num_vertices; ++v) {
+      if (std::fabs(phi[v]) < 1e-12) continue;
+      ++corners;
+      for (int d = 0; d < space; ++d)
+        straight[d] += phi[v] * xv[v * space + d];
+    }
+    const bool found = corners == 1 || nodes.find(corners, straight, curved);
+    PetscCheck(found, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "-mesh_geometry_order 2: no second-order node of mesh point %" PetscInt_FMT
+               " at (%g, %g, %g)",
+               point, straight[0], straight[1], straight[2]);
+    for (int d = 0; d < space; ++d)
+      xn[a * space + d] = corners == 1 ? straight[d] : curved[d];
+  }
+  *measure = 0.0;
+  PointGeometry g;
+  for (int q = 0; q < e.num_quadrature; ++q)
+    if (e.dim == space) {
+      mapQuadraturePoint(e, xn.data(), q, g, true);
+      *measure += g.weight;
+    } else
+      *measure += surfaceWeight(e, xn.data(), space, q, true);
+  PetscFunctionReturn(0);
+}
+
 /// Height of a bulk cell over one of its faces: volume / face measure, times the dimension on
-/// simplices (a triangle's height is 2 A / b).
-PetscErrorCode heightOver(DM dm, PetscInt cell, PetscInt face, int dim, double *h)
+/// simplices (a triangle's height is 2 A / b). Curved cells (`nodes`): both measures from the
+/// curved cell and face (an annular sector of thickness t inside its arc of radius r has
+/// h = t (2 r - t) / (2 r), where the straight-sided trapezoid gives cos(theta / 2) times that
+/// for a sector of angle theta).
+PetscErrorCode heightOver(DM dm, PetscInt cell, PetscInt face, int dim, const CurvedNodes *nodes,
+                          std::map<DMPolytopeType, ReferenceElement> &elements, double *h)
 {
   PetscReal volume, area, centroid[3], normal[3];
   DMPolytopeType type;
   PetscFunctionBeginUser;
-  PetscCall(DMPlexComputeCellGeometryFVM(dm, cell, &volume, centroid, normal));
-  PetscCall(DMPlexComputeCellGeometryFVM(dm, face, &area, centroid, normal));
+  if (nodes) {
+    double v, a;
+    PetscCall(curvedMeasure(dm, *nodes, cell, dim, elements, &v));
+    PetscCall(curvedMeasure(dm, *nodes, face, dim, elements, &a));
+    volume = v, area = a;
+  } else {
+    PetscCall(DMPlexComputeCellGeometryFVM(dm, cell, &volume, centroid, normal));
+    PetscCall(DMPlexComputeCellGeometryFVM(dm, face, &area, centroid, normal));
+  }
   PetscCall(DMPlexGetCellType(dm, cell, &type));
   const bool simplex = type == DM_POLYTOPE_TRIANGLE || type == DM_POLYTOPE_TETRAHEDRON;
   *h = area > 0.0 ? (simplex ? dim : 1) * std::abs(volume) / area : 0.0;
@@ -77,7 +154,7 @@ PetscErrorCode warn(MPI_Comm comm, const std::string &iface, const char *name, d
   if (x.soft_ratio < kPenaltyRatioSoft)
     std::snprintf(line, sizeof line,
                   "poroseam: warning: interface %s: %s = %g Pa/m is soft for its mesh: K h / E = "
-                  "%.3g (h = %.3g m, E = %.3g Pa), so the faces overlap and slide elastically as "
+                  "%.3g (h = %.4g m, E = %.3g Pa), so the faces overlap and slide elastically as "
                   "much as an element deforms; a sensible %s is 10 to 1000 E / h, here %.2g to "
                   "%.2g Pa/m (docs/interface_parameters.md)\n",
                   iface.c_str(), name, K, x.soft_ratio, x.soft_h, x.soft_E, name,
@@ -85,7 +162,7 @@ PetscErrorCode warn(MPI_Comm comm, const std::string &iface, const char *name, d
   else if (x.stiff_ratio > kPenaltyRatioStiff)
     std::snprintf(line, sizeof line,
                   "poroseam: warning: interface %s: %s = %g Pa/m is stiff for its mesh: K h / E = "
-                  "%.3g (h = %.3g m, E = %.3g Pa), so it dominates the conditioning (slow "
+                  "%.3g (h = %.4g m, E = %.3g Pa), so it dominates the conditioning (slow "
                   "iterative solves; with Gauss integration, oscillating tractions); a sensible "
                   "%s is 10 to 1000 E / h of the softer side, here %.2g to %.2g Pa/m "
                   "(docs/interface_parameters.md)\n",
@@ -109,6 +186,8 @@ PetscErrorCode warnAboutPenalties(DM dm, const Scene &scene)
   PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
   if (!iface || !cellSets) PetscFunctionReturn(0);
   std::vector<Extremes> normal(scene.interfaces.size()), tangential(scene.interfaces.size());
+  const CurvedNodes *nodes = curvedNodes(dm); // curved cells: their own measures
+  std::map<DMPolytopeType, ReferenceElement> elements;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType t;
@@ -135,7 +214,7 @@ PetscErrorCode warnAboutPenalties(DM dm, const Scene &scene)
         break;
       }
       double hs = 0.0;
-      PetscCall(heightOver(dm, cell, cone[side], scene.dim, &hs));
+      PetscCall(heightOver(dm, cell, cone[side], scene.dim, nodes, elements, &hs));
       h = std::min(h, hs);
       E[side] = scene.regions[r].young;
     }
