@@ -5,17 +5,12 @@
 // problem_state.cpp, the assembly in problem_assembly.cpp.
 #include "poroseam/problem.hpp"
 
-#include "cell_kernel.hpp"
-
 #include "poroseam/biot.hpp"
-#include "poroseam/closure_cache.hpp"
 #include "poroseam/collective_check.hpp"
-#include "poroseam/curved_nodes.hpp"
 #include "poroseam/elastic.hpp"
 #include "poroseam/interfaces.hpp"
-#include "poroseam/layout.hpp"
-#include "poroseam/mesh_points.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <petscsf.h>
 #include <sstream>
