@@ -17,6 +17,7 @@
 #include <functional>
 #include <map>
 #include <petscdmplex.h>
+#include <string>
 #include <vector>
 
 namespace poroseam {
@@ -162,6 +163,25 @@ private:
     int condition;
   };
 
+  // setup's steps, in its order (problem.cpp; the bulk cells in problem_cells.cpp, the
+  // constrained dofs in constrained_dofs.cpp).
+  /// Forgets an earlier setup's lists and takes the scene's laws and water column.
+  void takeScene(DM dm, const Scene &scene);
+  /// The bulk cells of this rank (cells_) with their reference elements, sizes for the
+  /// stabilisation and history slots, and each region's vertical extent [bottom, top] on this
+  /// rank; `error` set for a cell of no region (then stops).
+  PetscErrorCode collectBulkCells(std::vector<double> &bottom, std::vector<double> &top,
+                                  std::string *error);
+  /// -axisymmetric: `error` set for a vertex at x < 0 (x is the radius).
+  PetscErrorCode checkAxisymmetricMesh(std::string *error) const;
+  /// The closure cache of cells_.
+  PetscErrorCode setupClosures();
+  /// Curved cells (-mesh_geometry_order 2): node_places_, and no cell folds (collective).
+  PetscErrorCode setupCurvedCells(MPI_Comm comm);
+  /// mass_balance_scale_ from the cells' sizes and moduli (collective).
+  PetscErrorCode setupMassBalanceScale(MPI_Comm comm);
+  /// The local offsets of the dofs each Dirichlet condition sets (constrained_).
+  PetscErrorCode collectConstrainedDofs();
   PetscErrorCode elementIndex(DMPolytopeType type, int *index);
   /// residual() without its log event (it has several exits).
   PetscErrorCode assembleResidual(double t, Vec local, Vec local_rate, const ResidualMode &mode,

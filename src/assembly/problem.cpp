@@ -1,56 +1,21 @@
-// The problem's set-up: the bulk cells and their reference elements, the closure cache, the
-// geostatic column and its checks, the loaded faces (tractions, fluxes, water load) and the
-// constrained dofs. Part of Problem (problem.hpp); the states are in problem_state.cpp, the
-// assembly in problem_assembly.cpp.
+// The problem's set-up (Problem::setup) as the sequence of its steps: the bulk cells and their
+// checks (problem_cells.cpp), the geostatic column and its checks (here), the curved cells, the
+// mass-balance scale, the interfaces, the loaded faces (boundary_loads.cpp) and the constrained
+// dofs (constrained_dofs.cpp). Part of Problem (problem.hpp); the states are in
+// problem_state.cpp, the assembly in problem_assembly.cpp.
 #include "poroseam/problem.hpp"
 
-#include "cell_kernel.hpp"
-
 #include "poroseam/biot.hpp"
-#include "poroseam/closure_cache.hpp"
 #include "poroseam/collective_check.hpp"
-#include "poroseam/curved_nodes.hpp"
 #include "poroseam/elastic.hpp"
 #include "poroseam/interfaces.hpp"
-#include "poroseam/layout.hpp"
-#include "poroseam/mesh_points.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <petscsf.h>
 #include <sstream>
 
 namespace poroseam {
-namespace {
-
-/// Cell size h for the stabilisation. Tensor cells: the edge of the square or cube of the same
-/// volume, the element length of Aguilar et al.'s 1D analysis, where factor 1/4 is optimal.
-/// Simplices: sqrt(2) times the edge of the square or cube they are cut from, i.e. twice the
-/// beta of a tensor cell. Measured on the first undrained step of Terzaghi's column
-/// (tests/verification/stability.py): with the tensor value, triangles overshoot to 1.08 q and
-/// tetrahedra to 1.14 q; with twice it, 1.0002 q and 1.0009 q.
-double cellSize(const ReferenceElement &e, double volume)
-{
-  const double factorial = e.dim == 2 ? 2.0 : e.dim == 3 ? 6.0 : 1.0;
-  if (!e.simplex) return std::pow(volume, 1.0 / e.dim);
-  return std::sqrt(2.0) * std::pow(factorial * volume, 1.0 / e.dim);
-}
-
-} // namespace
-
-PetscErrorCode Problem::elementIndex(DMPolytopeType type, int *index)
-{
-  PetscFunctionBeginUser;
-  auto it = element_of_type_.find((int)type);
-  if (it == element_of_type_.end()) {
-    // Bulk cells and their boundary faces carry the scene's displacement order.
-    ReferenceElement e;
-    PetscCall(ReferenceElement::create(type, &e, scene_->displacement_order));
-    elements_.push_back(e);
-    it = element_of_type_.emplace((int)type, (int)elements_.size() - 1).first;
-  }
-  *index = it->second;
-  PetscFunctionReturn(0);
-}
 
 PetscErrorCode Problem::setupGeostatic(MPI_Comm comm, const std::vector<double> &bottom,
                                        const std::vector<double> &top)
@@ -180,14 +145,42 @@ PetscErrorCode Problem::outwardNormal(PetscInt face, PetscInt cell, double norma
   PetscFunctionReturn(0);
 }
 
+/// The order of the steps matters: the cells' regions and extents before the geostatic column,
+/// the closures before the curved cells' check (cellGeometry reads them), the geostatic column
+/// before the yield check and the interfaces' initial contact (both read the initial state).
 PetscErrorCode Problem::setup(DM dm, const Scene &scene)
 {
   MPI_Comm comm;
   PetscFunctionBeginUser;
+  takeScene(dm, scene);
+  PetscCall(PetscObjectGetComm((PetscObject)dm, &comm));
+  // Vertical extent of each region's cells on this rank (for the geostatic column).
+  std::vector<double> bottom(scene.regions.size(), 1e300), top(scene.regions.size(), -1e300);
+  std::string error;
+  PetscCall(collectBulkCells(bottom, top, &error));
+  if (scene.axisymmetric && error.empty()) PetscCall(checkAxisymmetricMesh(&error));
+  PetscCall(checkOnAllRanks(comm, error));
+  if (scene.geostatic) PetscCall(setupGeostatic(comm, bottom, top));
+  PetscCall(setupClosures());
+  PetscCall(setupCurvedCells(comm));
+  if (any_skeleton_history_) PetscCall(checkInitialYield(comm));
+  PetscCall(setupMassBalanceScale(comm));
+  PetscCall(interfaces_.setup(
+      dm, scene,
+      [this](const double x[], int tag, double s0[3][3]) {
+        initialTotalStress(x, scene_->regionIndexOfTag(tag), s0);
+      },
+      [this](const double x[]) { return initialPressure(x); }));
+  PetscCall(setupLoadedFaces());
+  PetscCall(collectConstrainedDofs());
+  PetscFunctionReturn(0);
+}
+
+void Problem::takeScene(DM dm, const Scene &scene)
+{
   dm_ = dm;
   scene_ = &scene;
   dim_ = scene.dim;
-  PetscCall(PetscObjectGetComm((PetscObject)dm, &comm));
   cells_.clear();
   faces_.clear();
   constrained_.clear();
@@ -199,175 +192,25 @@ PetscErrorCode Problem::setup(DM dm, const Scene &scene)
       std::any_of(laws_.begin(), laws_.end(), [](const SkeletonLaw &l) { return l.hasHistory(); });
   column_ = physics::GeostaticColumn{
       scene.surface_elevation, scene.water_level, scene.fluid_density, scene.gravity, {}};
-  // Vertical extent of each region's cells on this rank (for the geostatic column).
-  std::vector<double> bottom(scene.regions.size(), 1e300), top(scene.regions.size(), -1e300);
+}
 
-  DMLabel cellSets;
-  PetscCall(DMGetLabel(dm, "Cell Sets", &cellSets));
-  Vec coords;
-  PetscSection csec;
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(DMGetCoordinateSection(dm, &csec));
-  PetscInt cStart, cEnd;
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  std::string error;
-  PointGeometry g;
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    DMPolytopeType ct;
-    PetscCall(DMPlexGetCellType(dm, c, &ct));
-    if (isCohesive(ct)) continue; // interfaces: InterfaceAssembly
-    PetscInt tag = -1;
-    if (cellSets) PetscCall(DMLabelGetValue(cellSets, c, &tag));
-    const int region = scene.regionIndexOfTag((int)tag);
-    if (region < 0) {
-      std::ostringstream msg;
-      msg << "cell " << c << " belongs to no region listed in -regions (its Gmsh physical tag is "
-          << tag << "); every cell of the mesh needs a region with a material";
-      error = msg.str();
-      break;
-    }
-    BulkCell bc{c, region, 0, 0.0};
-    PetscCall(elementIndex(ct, &bc.element));
-    const ReferenceElement &e = elements_[bc.element];
-    PetscScalar *x = nullptr;
-    PetscInt n = 0;
-    PetscCall(DMPlexVecGetClosure(dm, csec, coords, c, &n, &x));
-    for (PetscInt a = dim_ - 1; a < n; a += dim_) {
-      bottom[region] = std::min(bottom[region], (double)x[a]);
-      top[region] = std::max(top[region], (double)x[a]);
-    }
-    double volume = 0.0;
-    for (int q = 0; q < e.num_quadrature; ++q) {
-      mapQuadraturePoint(e, x, q, g);
-      volume += g.weight;
-    }
-    PetscCall(DMPlexVecRestoreClosure(dm, csec, coords, c, &n, &x));
-    bc.size = cellSize(e, volume);
-    // Integration-point history only for laws that have one: a scene without them
-    // allocates nothing.
-    if (laws_[region].hasHistory()) {
-      bc.history = skeleton_committed_.size();
-      skeleton_committed_.resize(skeleton_committed_.size() + e.num_quadrature);
-    }
-    cells_.push_back(bc);
+PetscErrorCode Problem::setupMassBalanceScale(MPI_Comm comm)
+{
+  const Scene &scene = *scene_;
+  double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
+  PetscFunctionBeginUser;
+  // Porous regions set the scale; with none (interface flow between solid bodies), all do.
+  const bool any_porous = scene.hasPressure();
+  for (const auto &cell : cells_) {
+    const Region &r = scene.regions[cell.region];
+    if (any_porous && !r.porous()) continue;
+    local[0] += cell.size;
+    local[1] += 1.0;
+    local[2] = std::max(local[2], physics::lameFromYoung(r.young, r.poisson).constrained());
   }
-  if (scene.axisymmetric && error.empty()) {
-    // x is the radius: the mesh must lie on one side of the axis x = 0.
-    const PetscScalar *xa;
-    PetscInt nx;
-    PetscCall(VecGetLocalSize(coords, &nx));
-    PetscCall(VecGetArrayRead(coords, &xa));
-    for (PetscInt k = 0; k < nx && error.empty(); k += dim_)
-      if (xa[k] < -1e-12) {
-        std::ostringstream msg;
-        msg << "-axisymmetric: the mesh has a vertex at x = " << xa[k]
-            << " < 0; x is the radius, the axis is x = 0";
-        error = msg.str();
-      }
-    PetscCall(VecRestoreArrayRead(coords, &xa));
-  }
-  PetscCall(checkOnAllRanks(comm, error));
-  if (scene.geostatic) PetscCall(setupGeostatic(comm, bottom, top));
-  {
-    std::vector<PetscInt> points;
-    points.reserve(cells_.size());
-    for (const auto &cell : cells_)
-      points.push_back(cell.cell);
-    PetscCall(closures_.setup(dm, points));
-  }
-  node_places_.clear();
-  if (curvedNodes(dm)) {
-    PetscCall(displacementNodePlaces(dm, node_places_));
-    // A curved cell can fold where its straight-sided one does not (a coarse cell on a tight
-    // curve): its Jacobian must stay positive at every integration point.
-    const PetscScalar *ca;
-    std::vector<double> xg;
-    PetscCall(VecGetArrayRead(coords, &ca));
-    for (size_t i = 0; i < cells_.size() && error.empty(); ++i) {
-      const ReferenceElement &e = elements_[cells_[i].element];
-      cellGeometry(i, ca, xg);
-      for (int q = 0; q < e.num_quadrature; ++q) {
-        if (mapQuadraturePoint(e, xg.data(), q, g, true) > 0.0) continue;
-        std::ostringstream msg;
-        msg << "-mesh_geometry_order 2: the curved " << DMPolytopeTypes[e.type] << " cell "
-            << cells_[i].cell << " near (" << g.x[0] << ", " << g.x[1] << ", "
-            << (dim_ == 3 ? g.x[2] : 0.0)
-            << ") folds (non-positive Jacobian determinant at an integration point): the "
-               "cell is too coarse for its curve, or its second-order nodes are misplaced; "
-               "refine the mesh there, or use -mesh_geometry_order 1";
-        error = msg.str();
-        break;
-      }
-    }
-    PetscCall(VecRestoreArrayRead(coords, &ca));
-    PetscCall(checkOnAllRanks(comm, error));
-  }
-  if (any_skeleton_history_) PetscCall(checkInitialYield(comm));
-  {
-    double local[3] = {0.0, 0.0, 0.0}, global[3]; // sum h, count, max modulus (porous cells)
-    // Porous regions set the scale; with none (interface flow between solid bodies), all do.
-    const bool any_porous = scene.hasPressure();
-    for (const auto &cell : cells_) {
-      const Region &r = scene.regions[cell.region];
-      if (any_porous && !r.porous()) continue;
-      local[0] += cell.size;
-      local[1] += 1.0;
-      local[2] = std::max(local[2], physics::lameFromYoung(r.young, r.poisson).constrained());
-    }
-    PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm));
-    PetscCallMPI(MPI_Allreduce(&local[2], &global[2], 1, MPI_DOUBLE, MPI_MAX, comm));
-    mass_balance_scale_ = global[1] > 0.0 ? global[2] / (global[0] / global[1]) : 1.0;
-  }
-  PetscCall(interfaces_.setup(
-      dm, scene,
-      [this](const double x[], int tag, double s0[3][3]) {
-        initialTotalStress(x, scene_->regionIndexOfTag(tag), s0);
-      },
-      [this](const double x[]) { return initialPressure(x); }));
-
-  PetscCall(setupLoadedFaces());
-
-  // Local offsets of constrained dofs and the condition that sets each.
-  PetscSection s;
-  PetscCall(DMGetLocalSection(dm, &s));
-  PetscInt numFields;
-  PetscCall(PetscSectionGetNumFields(s, &numFields));
-  for (size_t i = 0; i < scene.conditions.size(); ++i) {
-    const auto &bc = scene.conditions[i];
-    if (!bc.dirichlet()) continue;
-    DMLabel label;
-    PetscCall(DMGetLabel(dm, boundaryLabelName(bc.boundary).c_str(), &label));
-    if (bc.kind == BcKind::interface_pressure) {
-      std::vector<PetscInt> edges;
-      PetscCall(lateralEdgesOnBoundary(dm, bc.boundary, edges));
-      for (PetscInt e : edges) {
-        PetscInt dof = 0, off = 0;
-        PetscCall(PetscSectionGetFieldDof(s, e, kInterfacePressureField, &dof));
-        if (!dof) continue;
-        PetscCall(PetscSectionGetFieldOffset(s, e, kInterfacePressureField, &off));
-        constrained_.push_back({off, (int)i});
-      }
-      continue;
-    }
-    IS points = nullptr;
-    PetscCall(DMLabelGetStratumIS(label, 1, &points));
-    if (!points) continue;
-    const PetscInt *idx;
-    PetscInt n;
-    PetscCall(ISGetLocalSize(points, &n));
-    PetscCall(ISGetIndices(points, &idx));
-    const int field = bc.kind == BcKind::pressure ? kPressureField : kDisplacementField;
-    for (PetscInt k = 0; k < n; ++k) {
-      PetscInt dof = 0, off = 0;
-      if (field >= numFields) continue;
-      PetscCall(PetscSectionGetFieldDof(s, idx[k], field, &dof));
-      if (!dof) continue;
-      PetscCall(PetscSectionGetFieldOffset(s, idx[k], field, &off));
-      constrained_.push_back({off + (field == kDisplacementField ? bc.component : 0), (int)i});
-    }
-    PetscCall(ISRestoreIndices(points, &idx));
-    PetscCall(ISDestroy(&points));
-  }
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&local[2], &global[2], 1, MPI_DOUBLE, MPI_MAX, comm));
+  mass_balance_scale_ = global[1] > 0.0 ? global[2] / (global[0] / global[1]) : 1.0;
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,7 @@
 // The state of one run shared by its parts (internal to src/solve): the set-up and time loop
-// (simulation.cpp), the callbacks TS calls in it (step_callbacks.cpp), the forces and flows it
-// reports (run_resultants.cpp) and the control of Newton's iterations (newton_control.cpp).
+// (simulation.cpp and the steps of run_steps.hpp), the callbacks TS calls in it
+// (step_callbacks.cpp), the forces and flows it reports (run_resultants.cpp) and the control of
+// Newton's iterations (newton_control.cpp).
 #pragma once
 
 #include "poroseam/field_writer.hpp"

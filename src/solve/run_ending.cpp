@@ -1,8 +1,10 @@
 // How a run ended (split from simulation.cpp): it succeeded only if it reached its final time;
 // any other end is an error that says where it stopped, why, and how to go on, and leaves a
-// checkpoint of its last accepted step (docs/checkpoints.md).
+// checkpoint of its last accepted step (docs/checkpoints.md). Then the run's record of it:
+// run.yaml's summary and the closing line.
 
 #include "run.hpp"
+#include "run_steps.hpp"
 
 #include "checkpoint.hpp"
 #include "rolling_checkpoint.hpp"
@@ -94,6 +96,34 @@ PetscErrorCode describeEnding(Run &run, Vec X, bool checkpoints, std::string *me
                   checkpoint_note.c_str(), (restart_hint + steps_hint).c_str());
   }
   *message = text;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode recordEnding(MPI_Comm comm, Run &run, RunRecord &record, int first_step,
+                            RunEnding ending, const std::string &message)
+{
+  PetscFunctionBeginUser;
+  if (ending == RunEnding::success) PetscCall(endRollingCheckpoint(run));
+  // From here the run writes its own record; a signal now only sets the flag.
+  StopRequest::disarmRecord();
+  {
+    RunSummary summary;
+    PetscInt newton, krylov, rejected;
+    PetscCall(TSGetSNESIterations(run.ts, &newton));
+    PetscCall(TSGetKSPIterations(run.ts, &krylov));
+    PetscCall(TSGetStepRejections(run.ts, &rejected));
+    PetscCall(TSGetTime(run.ts, &summary.time));
+    summary.steps = run.step - first_step, summary.first_step = first_step;
+    summary.last_step = run.step, summary.steps_cut_back = run.steps_cut_back;
+    summary.newton = newton, summary.krylov = krylov, summary.rejected = rejected;
+    summary.stepping_wall = MPI_Wtime() - run.loop_start_wall;
+    PetscCall(record.finish(comm, ending, message, summary, run.stop_signal));
+  }
+  PetscCall(reportRollingCheckpoints(run)); // printed after the record: stdout may block
+  PetscCall(run.stop.restore());
+  if (message.empty())
+    PetscCall(PetscPrintf(comm, "poroseam: %d steps in %.2f s, results in %s\n", run.step,
+                          MPI_Wtime() - run.loop_start_wall, run.scene.output_dir.c_str()));
   PetscFunctionReturn(0);
 }
 

@@ -1,8 +1,8 @@
 // The callbacks PETSc's time stepper calls during a step: boundary values and their rates,
 // the residual and Jacobian of the discrete system (DMTS local functions), and the post-step
-// hook that records, commits and checkpoints each accepted step. Apart from simulation.cpp,
-// which sets the run up and drives TSSolve, because these run inside TSSolve, once per stage
-// or step. Internal to src/solve (declared in run.hpp).
+// hook that records, commits and checkpoints each accepted step. Apart from the run's steps
+// (simulation.cpp, run_steps.hpp), which set the run up and drive TSSolve, because these run
+// inside TSSolve, once per stage or step. Internal to src/solve (declared in run.hpp).
 #include "run.hpp"
 
 #include "checkpoint.hpp"
