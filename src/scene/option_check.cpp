@@ -1,5 +1,7 @@
 #include "poroseam/option_check.hpp"
 
+#include "poroseam/option_registry.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -8,50 +10,17 @@
 namespace poroseam {
 namespace {
 
-/// Options of the whole scene and of the run, read by poroseam outside the families below
-/// (docs/scenes.md, docs/checkpoints.md; -mass_balance_krylov_test: mass_balance_test.hpp).
-/// -snes_reference_rtol and -snes_kink_linesearch are poroseam's too but live in PETSc's namespace,
-/// where a near miss may be PETSc's own.
-const char *const kSceneNames[] = {"mesh",
-                                   "mesh_size_factor",
-                                   "mesh_geometry_order",
-                                   "mesh_max_elements",
-                                   "mesh_time_limit",
-                                   "mesh_memory_check",
-                                   "regions",
-                                   "boundaries",
-                                   "interfaces",
-                                   "drained",
-                                   "axisymmetric",
-                                   "gravity",
-                                   "fluid_density",
-                                   "fluid_viscosity",
-                                   "stabilization_factor",
-                                   "displacement_order",
-                                   "initial_state",
-                                   "surface_elevation",
-                                   "water_level",
-                                   "water_load_boundaries",
-                                   "output_dir",
-                                   "output_fields_every",
-                                   "output_interfaces_every",
-                                   "partitioner",
-                                   "partitioner_report",
-                                   "solver_preset",
-                                   "solver_auto_threshold",
-                                   "mass_balance_krylov_test",
-                                   "checkpoint_every",
-                                   "checkpoint_rolling",
-                                   "checkpoint_rolling_interval",
-                                   "io_agreement_timeout",
-                                   "restart",
-                                   "restart_step",
-                                   "test_fail_dt_above",
-                                   "test_allow_crank_nicolson",
-                                   "test_step_delay",
-                                   "test_step_delay_after",
-                                   "test_io_fail_rank",
-                                   "options_unused_ok"};
+/// Options of the whole scene and of the run, read by poroseam outside the families below:
+/// the declared options in poroseam's namespace (options.def). -snes_reference_rtol and
+/// -snes_kink_linesearch are poroseam's too but live in PETSc's namespace, where a near miss
+/// may be PETSc's own.
+std::vector<std::string> declaredNames()
+{
+  std::vector<std::string> names;
+  for (const auto &s : optionRegistry())
+    if (s.space == OptionSpace::poroseam) names.emplace_back(s.name());
+  return names;
+}
 
 /// Options of PETSc's objects start with these: a near miss of a scene name among them is
 /// left to PETSc and to the check of options nothing reads (unused_options.hpp).
@@ -312,15 +281,15 @@ std::string closestName(const std::string &word, const std::vector<std::string> 
 
 std::vector<std::string> sceneOptionNames()
 {
-  return std::vector<std::string>(std::begin(kSceneNames), std::end(kSceneNames));
+  return declaredNames();
 }
 
 bool isSceneOption(const std::string &name)
 {
   for (const char *prefix : {"region_", "bc_", "interface_", "probe_"})
     if (startsWith(name, prefix)) return true;
-  return std::any_of(std::begin(kSceneNames), std::end(kSceneNames),
-                     [&](const char *known) { return name == known; });
+  const OptionSpec *declared = findOption(name);
+  return declared && declared->space == OptionSpace::poroseam;
 }
 
 std::string misspeltOption(const std::string &name, const std::string &value,
@@ -334,11 +303,10 @@ std::string misspeltOption(const std::string &name, const std::string &value,
   const std::vector<Family> all = families(names);
   for (const auto &f : all)
     if (startsWith(name, f.prefix)) return scene_known ? checkFamily(f, name, names, given) : "";
-  for (const char *known : kSceneNames)
-    if (name == known) return "";
+  const std::vector<std::string> scene = declaredNames();
+  if (std::find(scene.begin(), scene.end(), name) != scene.end()) return "";
   for (const char *prefix : kPetscPrefixes)
     if (startsWith(name, prefix)) return "";
-  std::vector<std::string> scene(std::begin(kSceneNames), std::end(kSceneNames));
   const std::string meant = closest(name, scene);
   if (!meant.empty())
     return "option -" + name + " is not an option of poroseam" + suggestion(meant);
