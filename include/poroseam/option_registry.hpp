@@ -32,9 +32,9 @@ enum class OptionRestart { fixed, may_change };
 enum class OptionSpace { poroseam, petsc };
 
 struct OptionSpec {
-  const char *flag;          ///< "-gravity": the name as given, for the readers and messages
+  const char *flag; ///< "-gravity": the name as given, for the readers and messages
   OptionKind kind;
-  const char *choices;       ///< a choice's values, space-separated; "" for other kinds
+  const char *choices; ///< a choice's values, space-separated; "" for other kinds
   OptionCheck check;
   const char *default_shown; ///< the default as -help and the docs show it
   const char *help;          ///< one line, with the SI unit

@@ -67,7 +67,7 @@ PetscErrorCode getString(PetscOptionItems *PetscOptionsObject, const OptionSpec 
                          std::string &value, bool *set);
 PetscErrorCode getStringList(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
                              std::vector<std::string> &values, bool *set);
-PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
-                       bool *value, bool *set);
+PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const OptionSpec &option, bool *value,
+                       bool *set);
 
 } // namespace poroseam

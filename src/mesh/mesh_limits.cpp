@@ -100,14 +100,15 @@ PetscErrorCode readMeshLimits(MPI_Comm comm, int displacement_order, MeshLimits 
   PetscOptionsEnd();
   if (max_set) {
     double v;
-    PetscCall(readNumber(spec(Option::mesh_max_elements).flag, max_text, 1, "a whole number >= 1", comm, &v));
+    PetscCall(readNumber(spec(Option::mesh_max_elements).flag, max_text, 1, "a whole number >= 1",
+                         comm, &v));
     PetscCheck(v == std::floor(v), comm, PETSC_ERR_USER_INPUT,
                "option -mesh_max_elements %s: expected a whole number >= 1", max_text.c_str());
     limits->max_elements = (long)v;
   }
   if (time_set) {
-    PetscCall(readNumber(spec(Option::mesh_time_limit).flag, time_text, 0, "a time in seconds > 0", comm,
-                         &limits->time_limit));
+    PetscCall(readNumber(spec(Option::mesh_time_limit).flag, time_text, 0, "a time in seconds > 0",
+                         comm, &limits->time_limit));
     PetscCheck(limits->time_limit > 0, comm, PETSC_ERR_USER_INPUT,
                "option -mesh_time_limit %s: expected a time in seconds > 0", time_text.c_str());
   }

@@ -49,8 +49,8 @@ std::string runDirectory()
       set && buffer[0])
     return buffer;
   set = PETSC_FALSE;
-  if (!PetscOptionsGetString(nullptr, nullptr, spec(Option::output_dir).flag, buffer,
-                             sizeof buffer, &set) &&
+  if (!PetscOptionsGetString(nullptr, nullptr, spec(Option::output_dir).flag, buffer, sizeof buffer,
+                             &set) &&
       set)
     return buffer;
   return Scene().output_dir;

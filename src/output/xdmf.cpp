@@ -44,8 +44,8 @@ PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char
 PetscErrorCode readAgreementTimeout(PetscReal *grace)
 {
   PetscFunctionBeginUser;
-  PetscCall(
-      PetscOptionsGetReal(nullptr, nullptr, spec(Option::io_agreement_timeout).flag, grace, nullptr));
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, spec(Option::io_agreement_timeout).flag, grace,
+                                nullptr));
   PetscFunctionReturn(0);
 }
 

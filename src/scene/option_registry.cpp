@@ -4,13 +4,15 @@
 #include <sstream>
 
 namespace poroseam {
+
 const std::vector<OptionSpec> &optionRegistry()
 {
   static const std::vector<OptionSpec> all = {
-#define POROSEAM_OPTION(name, kind, choices, check, shown, help, doc, restart, space)             \
-  {"-" #name,      OptionKind::kind,       choices,                 OptionCheck::check,             \
-   shown,          help,                   doc,                     OptionRestart::restart,         \
-   OptionSpace::space},
+// clang-format off
+#define POROSEAM_OPTION(name, kind, choices, check, shown, help, doc, restart, space) \
+  {"-" #name, OptionKind::kind, choices, OptionCheck::check, shown, help, doc, \
+   OptionRestart::restart, OptionSpace::space},
+  // clang-format on
 #include "poroseam/options.def"
 #undef POROSEAM_OPTION
   };

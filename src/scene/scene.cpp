@@ -191,8 +191,7 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   // The free water above the ground pushes on the boundaries it stands on; the geostatic
   // state balances that load, so with water above the surface it must be applied.
   std::vector<std::string> names_w;
-  PetscCall(
-      getStringList(PetscOptionsObject, spec(Option::water_load_boundaries), names_w, &set));
+  PetscCall(getStringList(PetscOptionsObject, spec(Option::water_load_boundaries), names_w, &set));
   PetscCheck(!set || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-water_load_boundaries: the water's pressure needs -gravity > 0");
   scene.water_load_boundaries.clear();

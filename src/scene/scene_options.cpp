@@ -189,8 +189,8 @@ PetscErrorCode getStringList(PetscOptionItems *PetscOptionsObject, const OptionS
   return readStringList(PetscOptionsObject, option.flag, option.help, option.doc, values, set);
 }
 
-PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
-                       bool *value, bool *set)
+PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const OptionSpec &option, bool *value,
+                       bool *set)
 {
   return readFlag(PetscOptionsObject, option.flag, option.help, option.doc, value, set);
 }

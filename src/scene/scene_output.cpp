@@ -65,8 +65,8 @@ PetscErrorCode readOutputOptions(MPI_Comm comm, Scene &scene)
   // Interface output: with the fields unless a scene asks for more (the caisson scenes: every
   // step, for the mobilisation of friction within a few steps).
   double interface_every = scene.output_every;
-  PetscCall(
-      getReal(PetscOptionsObject, spec(Option::output_interfaces_every), &interface_every, nullptr));
+  PetscCall(getReal(PetscOptionsObject, spec(Option::output_interfaces_every), &interface_every,
+                    nullptr));
   PetscCheck(interface_every >= 0 && interface_every == std::floor(interface_every), comm,
              PETSC_ERR_USER_INPUT, "-output_interfaces_every %g: expected a whole number >= 0",
              interface_every);

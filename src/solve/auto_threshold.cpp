@@ -12,7 +12,8 @@ PetscErrorCode readAutoThreshold(PetscOptionItems *PetscOptionsObject, MPI_Comm 
   PetscFunctionBeginUser;
   *threshold = defaultAutoThreshold(displacement_order);
   if (PetscOptionsObject)
-    PetscCall(PetscOptionsInt(option.flag, option.help, option.doc, *threshold, threshold, nullptr));
+    PetscCall(
+        PetscOptionsInt(option.flag, option.help, option.doc, *threshold, threshold, nullptr));
   else
     PetscCall(PetscOptionsGetInt(nullptr, nullptr, option.flag, threshold, nullptr));
   PetscCheck(*threshold >= 0, comm, PETSC_ERR_USER_INPUT,

@@ -433,8 +433,8 @@ PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *re
                             nullptr));
   PetscCall(PetscOptionsString(restart_option.flag, restart_option.help, restart_option.doc,
                                restart_option.default_shown, dir, sizeof(dir), &set));
-  PetscCall(PetscOptionsInt(step_option.flag, step_option.help, step_option.doc, step, &step,
-                            &step_set));
+  PetscCall(
+      PetscOptionsInt(step_option.flag, step_option.help, step_option.doc, step, &step, &step_set));
   PetscOptionsEnd();
   PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT,
              "-checkpoint_every %d: expected a number of steps >= 0 (0: checkpoints only when a "

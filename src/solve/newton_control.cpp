@@ -1,8 +1,8 @@
 // When Newton stops, how exactly each linear solve is asked to be, and where Newton starts
 // (split from simulation.cpp).
 
-#include "run.hpp"
 #include "poroseam/option_registry.hpp"
+#include "run.hpp"
 
 #include "poroseam/newton_forcing.hpp"
 

@@ -9,7 +9,10 @@
                                  getters getReal/getString/... of scene_options.hpp) is PETSc's
                                  own; an option of poroseam's is read through its declaration
                                  (spec(Option::name)), never by a literal of its own; and every
-                                 declared option is read somewhere (no dead declaration)
+                                 declared option is read somewhere (no dead declaration); the
+                                 keys of -region_<r>_*, -interface_<i>_*, -bc_<b>_* that the
+                                 readers read are those option_check.cpp lists, and docs/scenes.md
+                                 describes each
     registry.py --case help      `poroseam -options_file <Terzaghi> -help`: each declared option
                                  -help lists is listed once, with the help text and docs page
                                  of its declaration, and the options read in every run are there
@@ -92,8 +95,57 @@ def declarations():
     return decls
 
 
+# The families named after a scene's parts: their keys are listed once in option_check.cpp
+# (for the misspelling check) and read in one file each.
+FAMILIES = [("region", "<r>", "kRegionKeys", "src/scene/scene_region.cpp"),
+            ("interface", "<i>", "kInterfaceKeys", "src/scene/scene_interface.cpp"),
+            ("bc", "<b>", "kBoundaryQuantities", "src/scene/scene_boundary.cpp")]
+
+
+def family_keys(array):
+    text = open(os.path.join(SOURCE, "src", "scene", "option_check.cpp")).read()
+    m = re.search(r"const char \*const %s\[\] = \{(.*?)\};" % array, text, re.S)
+    return re.findall(r'"([^"]+)"', m.group(1)) if m else []
+
+
+def keys_read(path):
+    """The keys a family's reader names: p + "E", condition("p", ...), {"ux", "uy", "uz"}."""
+    text = open(os.path.join(SOURCE, path)).read()
+    keys = set(re.findall(r'\bp \+ "([A-Za-z0-9_]+)"', text))
+    keys |= set(re.findall(r'\bcondition\("([A-Za-z0-9_]+)"', text))
+    for group in re.findall(r"comps\[\d\] = \{([^}]*)\}", text):
+        keys |= set(re.findall(r'"([A-Za-z0-9_]+)"', group))
+    return keys
+
+
+def case_families():
+    failures = []
+    for family, entity, array, reader in FAMILIES:
+        listed = family_keys(array)
+        if not listed:
+            failures.append("option_check.cpp: no list %s" % array)
+            continue
+        read = keys_read(reader)
+        for k in sorted(read - set(listed)):
+            failures.append("-%s_%s_%s: read in %s but not in option_check.cpp's %s (a "
+                            "misspelling of it would pass unnoticed)" %
+                            (family, entity, k, reader, array))
+        for k in sorted(set(listed) - read):
+            failures.append("-%s_%s_%s: in option_check.cpp's %s but not read in %s" %
+                            (family, entity, k, array, reader))
+    return failures
+
+
 def case_docs(decls):
     failures = []
+    scenes = open(os.path.join(SOURCE, "docs", "scenes.md")).read()
+    for family, entity, array, _ in FAMILIES:
+        for k in family_keys(array):
+            head = "-%s_%s_" % (family, entity)
+            # "-bc_<b>_ux V`, `_uy`, `_uz`": a key named after the family on the same line
+            if not re.search(r"%s%s\b|%s.*`_%s`" % (re.escape(head), re.escape(k),
+                                                    re.escape(head), re.escape(k)), scenes):
+                failures.append("-%s_%s_%s: not described in docs/scenes.md" % (family, entity, k))
     for d in decls:
         page = os.path.join(SOURCE, d["doc"])
         if not d["doc"].startswith("docs/") or not os.path.isfile(page):
@@ -173,7 +225,7 @@ def case_readers(decls):
             failures.append("-%s: declared, but no code in src/ reads it (spec(Option::%s))" %
                             (d["name"], d["name"]))
     print("readers with a literal option name: %d" % seen)
-    return failures
+    return failures + case_families()
 
 
 HELP_LINE = re.compile(r"^\s+-([A-Za-z][A-Za-z0-9_]*):? <[^>]*>:? (.*) \(([^()]*)\)\s*$")

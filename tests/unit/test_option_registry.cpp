@@ -73,8 +73,7 @@ TEST(OptionRegistry, BeforeRunCheckFollowsTheDeclarations)
 TEST(OptionRegistry, RestartMayChangeFollowsTheDeclarations)
 {
   for (const auto &s : optionRegistry())
-    EXPECT_EQ(simulation_detail::restartMayChange(s.name()),
-              s.restart == OptionRestart::may_change)
+    EXPECT_EQ(simulation_detail::restartMayChange(s.name()), s.restart == OptionRestart::may_change)
         << s.flag;
   // PETSc's families stay free; an option not declared is compared.
   EXPECT_TRUE(simulation_detail::restartMayChange("ksp_rtol"));
