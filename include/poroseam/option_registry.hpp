@@ -52,6 +52,32 @@ enum class Option {
 #undef POROSEAM_OPTION
 };
 
+/// The keys of the families named after a scene's parts (options.def): -region_<r>_E is
+/// "-region_" + name + "_" + key(RegionKey::E).
+enum class RegionKey {
+#define POROSEAM_REGION_KEY(key) key,
+#include "poroseam/options.def"
+#undef POROSEAM_REGION_KEY
+};
+enum class BoundaryKey {
+#define POROSEAM_BOUNDARY_KEY(key) key,
+#include "poroseam/options.def"
+#undef POROSEAM_BOUNDARY_KEY
+};
+enum class InterfaceKey {
+#define POROSEAM_INTERFACE_KEY(key) key,
+#include "poroseam/options.def"
+#undef POROSEAM_INTERFACE_KEY
+};
+const char *key(RegionKey k);
+const char *key(BoundaryKey k);
+const char *key(InterfaceKey k);
+
+/// Every key of a family, in the order of options.def.
+std::vector<std::string> regionKeys();
+std::vector<std::string> boundaryQuantities();
+std::vector<std::string> interfaceKeys();
+
 /// The declaration of `option`.
 const OptionSpec &spec(Option option);
 

@@ -29,26 +29,6 @@ const char *const kPetscPrefixes[] = {"ts_",         "snes_",  "ksp_",   "pc_", 
                                       "petsc",       "viewer", "draw",   "is_",     "sf_",  "tao_",
                                       "fieldsplit_", "help",   "info",   "version", "mpi"};
 
-const char *const kRegionKeys[] = {"material",
-                                   "E",
-                                   "nu",
-                                   "rho_s",
-                                   "K0",
-                                   "ground",
-                                   "porosity",
-                                   "permeability",
-                                   "biot_alpha",
-                                   "storage",
-                                   "cohesion",
-                                   "friction_angle",
-                                   "dilation_angle",
-                                   "tension_cutoff"};
-const char *const kBoundaryQuantities[] = {"ux", "uy",       "uz",       "p",
-                                           "p3", "traction", "pressure", "flux"};
-const char *const kInterfaceKeys[] = {
-    "surfaces",       "side1",       "KN",   "KT", "friction", "dilation_angle",
-    "dilation_limit", "integration", "flow", "D0", "T1",       "T2"};
-
 /// The splits poroseam names (src/solve/nullspace.cpp), and the splits inside each.
 struct Split {
   const char *name;
@@ -118,19 +98,19 @@ struct Family {
 std::vector<std::string> boundaryKeys()
 {
   std::vector<std::string> keys;
-  for (const char *q : kBoundaryQuantities) {
-    keys.emplace_back(q);
-    keys.push_back(std::string(q) + "_ramp");
-    keys.push_back(std::string(q) + "_table");
+  for (const auto &q : boundaryQuantities()) {
+    keys.push_back(q);
+    keys.push_back(q + "_ramp");
+    keys.push_back(q + "_table");
   }
   return keys;
 }
 
 std::vector<Family> families(const SceneNames &names)
 {
-  const std::vector<std::string> region(std::begin(kRegionKeys), std::end(kRegionKeys));
-  const std::vector<std::string> interface(std::begin(kInterfaceKeys), std::end(kInterfaceKeys));
-  const std::vector<std::string> bc(std::begin(kBoundaryQuantities), std::end(kBoundaryQuantities));
+  // The keys as declared (options.def).
+  const std::vector<std::string> region = regionKeys(), interface = interfaceKeys(),
+                                 bc = boundaryQuantities();
   return {{"region_", "region", "-regions", names.regions, region, names.dim, join(region)},
           {"bc_", "boundary", "-boundaries", names.boundaries, boundaryKeys(), names.dim - 1,
            join(bc) + ", each with _ramp or _table"},

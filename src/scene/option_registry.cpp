@@ -1,6 +1,7 @@
 // The table of options.def (see option_registry.hpp).
 #include "poroseam/option_registry.hpp"
 
+#include <iterator>
 #include <sstream>
 
 namespace poroseam {
@@ -18,6 +19,40 @@ const std::vector<OptionSpec> &optionRegistry()
   };
   return all;
 }
+
+namespace {
+
+const char *const kRegionKeys[] = {
+#define POROSEAM_REGION_KEY(key) #key,
+#include "poroseam/options.def"
+#undef POROSEAM_REGION_KEY
+};
+const char *const kBoundaryKeys[] = {
+#define POROSEAM_BOUNDARY_KEY(key) #key,
+#include "poroseam/options.def"
+#undef POROSEAM_BOUNDARY_KEY
+};
+const char *const kInterfaceKeys[] = {
+#define POROSEAM_INTERFACE_KEY(key) #key,
+#include "poroseam/options.def"
+#undef POROSEAM_INTERFACE_KEY
+};
+
+template <std::size_t N>
+std::vector<std::string> all(const char *const (&keys)[N])
+{
+  return std::vector<std::string>(std::begin(keys), std::end(keys));
+}
+
+} // namespace
+
+const char *key(RegionKey k) { return kRegionKeys[static_cast<std::size_t>(k)]; }
+const char *key(BoundaryKey k) { return kBoundaryKeys[static_cast<std::size_t>(k)]; }
+const char *key(InterfaceKey k) { return kInterfaceKeys[static_cast<std::size_t>(k)]; }
+
+std::vector<std::string> regionKeys() { return all(kRegionKeys); }
+std::vector<std::string> boundaryQuantities() { return all(kBoundaryKeys); }
+std::vector<std::string> interfaceKeys() { return all(kInterfaceKeys); }
 
 const OptionSpec &spec(Option option)
 {

@@ -10,9 +10,8 @@
                                  own; an option of poroseam's is read through its declaration
                                  (spec(Option::name)), never by a literal of its own; and every
                                  declared option is read somewhere (no dead declaration); the
-                                 keys of -region_<r>_*, -interface_<i>_*, -bc_<b>_* that the
-                                 readers read are those option_check.cpp lists, and docs/scenes.md
-                                 describes each
+                                 same for the keys of -region_<r>_*, -interface_<i>_*, -bc_<b>_*
+                                 (declared in options.def too, described in docs/scenes.md)
     registry.py --case help      `poroseam -options_file <Terzaghi> -help`: each declared option
                                  -help lists is listed once, with the help text and docs page
                                  of its declaration, and the options read in every run are there
@@ -78,16 +77,42 @@ def split_args(text):
     return out
 
 
-def declarations():
-    path = os.path.join(SOURCE, "include", "poroseam", "options.def")
-    text = open(path).read()
+def macro_calls(text, macro):
+    """The argument texts of every `macro(...)` call in `text` (parentheses inside string
+    literals skipped)."""
+    calls = []
+    for m in re.finditer(r"^%s\((?=[A-Za-z])" % macro, text, re.M):
+        i, depth, quoted, start = m.end(), 1, False, m.end()
+        while depth:
+            c = text[i]
+            if quoted:
+                if c == "\\":
+                    i += 1
+                elif c == '"':
+                    quoted = False
+            elif c == '"':
+                quoted = True
+            elif c == "(":
+                depth += 1
+            elif c == ")":
+                depth -= 1
+            i += 1
+        calls.append(text[start:i - 1])
+    return calls
+
+
+def options_def():
+    text = open(os.path.join(SOURCE, "include", "poroseam", "options.def")).read()
     # Comments off (no "//" inside the declarations' strings).
-    text = "\n".join(line for line in text.splitlines() if not line.lstrip().startswith("//"))
+    return "\n".join(line for line in text.splitlines() if not line.lstrip().startswith("//"))
+
+
+def declarations():
     decls = []
-    for m in re.finditer(r"POROSEAM_OPTION\((.*?)\)\s*(?=POROSEAM_OPTION\(|$)", text, re.S):
-        a = split_args(m.group(1))
+    for call in macro_calls(options_def(), "POROSEAM_OPTION"):
+        a = split_args(call)
         if len(a) != 9:
-            sys.exit("options.def: a declaration without its 9 fields: " + m.group(0)[:80])
+            sys.exit("options.def: a declaration without its 9 fields: " + call[:80])
         decls.append(dict(name=a[0], kind=a[1], choices=a[2].split(), check=a[3], shown=a[4],
                           help=a[5], doc=a[6], restart=a[7], space=a[8]))
     if len(decls) < 10:
@@ -95,52 +120,43 @@ def declarations():
     return decls
 
 
-# The families named after a scene's parts: their keys are listed once in option_check.cpp
-# (for the misspelling check) and read in one file each.
-FAMILIES = [("region", "<r>", "kRegionKeys", "src/scene/scene_region.cpp"),
-            ("interface", "<i>", "kInterfaceKeys", "src/scene/scene_interface.cpp"),
-            ("bc", "<b>", "kBoundaryQuantities", "src/scene/scene_boundary.cpp")]
+# The families named after a scene's parts: their keys are declared in options.def and read in
+# one file each, through the declaration (key(RegionKey::E)).
+FAMILIES = [("region", "<r>", "REGION", "RegionKey", "src/scene/scene_region.cpp"),
+            ("interface", "<i>", "INTERFACE", "InterfaceKey", "src/scene/scene_interface.cpp"),
+            ("bc", "<b>", "BOUNDARY", "BoundaryKey", "src/scene/scene_boundary.cpp")]
 
 
-def family_keys(array):
-    text = open(os.path.join(SOURCE, "src", "scene", "option_check.cpp")).read()
-    m = re.search(r"const char \*const %s\[\] = \{(.*?)\};" % array, text, re.S)
-    return re.findall(r'"([^"]+)"', m.group(1)) if m else []
-
-
-def keys_read(path):
-    """The keys a family's reader names: p + "E", condition("p", ...), {"ux", "uy", "uz"}."""
-    text = open(os.path.join(SOURCE, path)).read()
-    keys = set(re.findall(r'\bp \+ "([A-Za-z0-9_]+)"', text))
-    keys |= set(re.findall(r'\bcondition\("([A-Za-z0-9_]+)"', text))
-    for group in re.findall(r"comps\[\d\] = \{([^}]*)\}", text):
-        keys |= set(re.findall(r'"([A-Za-z0-9_]+)"', group))
-    return keys
+def family_keys(macro):
+    return [k.strip() for k in macro_calls(options_def(), "POROSEAM_%s_KEY" % macro)]
 
 
 def case_families():
     failures = []
-    for family, entity, array, reader in FAMILIES:
-        listed = family_keys(array)
-        if not listed:
-            failures.append("option_check.cpp: no list %s" % array)
+    for family, entity, macro, enum, reader in FAMILIES:
+        declared = family_keys(macro)
+        if len(declared) < 5:
+            failures.append("options.def: only %d keys of -%s_%s_*" % (len(declared), family,
+                                                                       entity))
             continue
-        read = keys_read(reader)
-        for k in sorted(read - set(listed)):
-            failures.append("-%s_%s_%s: read in %s but not in option_check.cpp's %s (a "
-                            "misspelling of it would pass unnoticed)" %
-                            (family, entity, k, reader, array))
-        for k in sorted(set(listed) - read):
-            failures.append("-%s_%s_%s: in option_check.cpp's %s but not read in %s" %
-                            (family, entity, k, array, reader))
+        text = open(os.path.join(SOURCE, reader)).read()
+        used = set(re.findall(r"\b%s::([A-Za-z0-9_]+)" % enum, text))
+        literal = set(re.findall(r'\bp \+ "([A-Za-z0-9_]+)"', text))
+        literal |= set(re.findall(r'\bcondition\("([A-Za-z0-9_]+)"', text))
+        for k in sorted(literal):
+            failures.append("%s: reads -%s_%s_%s by a literal: take it from its declaration, "
+                            "key(%s::%s)" % (reader, family, entity, k, enum, k))
+        for k in sorted(set(declared) - used):
+            failures.append("-%s_%s_%s: declared in options.def but not read in %s" %
+                            (family, entity, k, reader))
     return failures
 
 
 def case_docs(decls):
     failures = []
     scenes = open(os.path.join(SOURCE, "docs", "scenes.md")).read()
-    for family, entity, array, _ in FAMILIES:
-        for k in family_keys(array):
+    for family, entity, macro, _, _ in FAMILIES:
+        for k in family_keys(macro):
             head = "-%s_%s_" % (family, entity)
             # "-bc_<b>_ux V`, `_uy`, `_uz`": a key named after the family on the same line
             if not re.search(r"%s%s\b|%s.*`_%s`" % (re.escape(head), re.escape(k),

@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace poroseam {
 namespace {
@@ -49,6 +51,33 @@ TEST(OptionRegistry, MisspellingCheckKnowsEveryDeclaredName)
   }
   EXPECT_NE(misspeltOption("checkpoint_evry", "1", none, {}).find("-checkpoint_every?"),
             std::string::npos);
+}
+
+TEST(OptionRegistry, MisspellingCheckKnowsEveryDeclaredKey)
+{
+  SceneNames scene;
+  scene.dim = 2;
+  scene.regions = {"soil"};
+  scene.boundaries = {"top"};
+  scene.interfaces = {"joint"};
+  const std::pair<std::string, std::vector<std::string>> families[] = {
+      {"region_soil_", regionKeys()},
+      {"bc_top_", boundaryQuantities()},
+      {"interface_joint_", interfaceKeys()}};
+  for (const auto &[prefix, keys] : families) {
+    EXPECT_GE(keys.size(), 8u) << prefix;
+    for (const auto &k : keys) {
+      const std::set<std::string> given = {prefix + k};
+      EXPECT_EQ(misspeltOption(prefix + k, "1", scene, given), "") << prefix + k;
+    }
+    // A key that is declared nowhere is refused, naming the family's keys.
+    const std::string message = misspeltOption(prefix + "zzqq", "1", scene, {});
+    EXPECT_NE(message.find("has no option 'zzqq'"), std::string::npos) << message;
+    EXPECT_NE(message.find(keys.back()), std::string::npos) << message;
+  }
+  EXPECT_STREQ(key(RegionKey::E), "E");
+  EXPECT_STREQ(key(BoundaryKey::p3), "p3");
+  EXPECT_STREQ(key(InterfaceKey::dilation_limit), "dilation_limit");
 }
 
 TEST(OptionRegistry, BeforeRunCheckFollowsTheDeclarations)
