@@ -15,6 +15,8 @@
 // abc: expected a number"), not in PETSc's message, which names the value only.
 #pragma once
 
+#include "poroseam/option_registry.hpp"
+
 #include <petscsys.h>
 #include <string>
 #include <vector>
@@ -56,5 +58,16 @@ PetscErrorCode getStringList(PetscOptionItems *PetscOptionsObject, const std::st
 /// PETSc parses it; a bad value is named by main's error handler.
 PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const std::string &option,
                        const std::string &help, bool *value, bool *set);
+
+// The same getters for a declared option (options.def): its name, help and docs page come
+// from the declaration.
+PetscErrorCode getReal(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
+                       double *value, bool *set);
+PetscErrorCode getString(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
+                         std::string &value, bool *set);
+PetscErrorCode getStringList(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
+                             std::vector<std::string> &values, bool *set);
+PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const OptionSpec &option, bool *value,
+                       bool *set);
 
 } // namespace poroseam

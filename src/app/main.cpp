@@ -3,6 +3,7 @@
 #include "poroseam/help_filter.hpp"
 #include "poroseam/output_directory.hpp"
 #include "poroseam/given_options.hpp"
+#include "poroseam/option_registry.hpp"
 #include "poroseam/options_file.hpp"
 #include "poroseam/run_options.hpp"
 #include "poroseam/scene.hpp"
@@ -200,7 +201,8 @@ int main(int argc, char **argv)
   PetscCall(PetscPushErrorHandler(reportError, nullptr));
   PetscBool help_requested = PETSC_FALSE, has_mesh = PETSC_FALSE;
   PetscCall(PetscOptionsHasHelp(nullptr, &help_requested));
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-mesh", &has_mesh));
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, poroseam::spec(poroseam::Option::mesh).flag,
+                                &has_mesh));
   // Objects on PETSC_COMM_SELF (index sets of the field split, for one) print their options'
   // help from every rank; rank 1's lines then landed in the middle of rank 0's listing, which
   // Open MPI forwards in chunks, and cut some of its lines in two. Rank 0 speaks for all.

@@ -316,10 +316,9 @@ PetscErrorCode distributeMesh(DM *dm)
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(readPartitionerOption(comm, &kind, &kindName));
   PetscOptionsBegin(comm, nullptr, "poroseam partitioning report", kSceneDoc);
-  PetscCall(PetscOptionsBool("-partitioner_report",
-                             "print the cells per rank and the cohesive cells cut from a bulk "
-                             "neighbour",
-                             kSceneDoc, report, &report, nullptr));
+  const OptionSpec &report_option = spec(Option::partitioner_report);
+  PetscCall(PetscOptionsBool(report_option.flag, report_option.help, report_option.doc, report,
+                             &report, nullptr));
   PetscOptionsEnd();
   PetscCall(configurePartitioner(*dm, kind));
   PetscSF migration = nullptr;

@@ -1,6 +1,8 @@
 #include "poroseam/mesh_limits.hpp"
 #include "poroseam/solver_preset.hpp"
 
+#include "poroseam/auto_threshold.hpp"
+
 #include "poroseam/scene_options.hpp"
 
 #include <cmath>
@@ -88,31 +90,25 @@ PetscErrorCode readMeshLimits(MPI_Comm comm, int displacement_order, MeshLimits 
 {
   std::string max_text = "2000000", time_text = "600";
   bool max_set = false, time_set = false;
-  PetscBool check = PETSC_TRUE;
+  bool check = true;
   PetscFunctionBeginUser;
   *limits = MeshLimits();
   PetscOptionsBegin(comm, nullptr, "poroseam scene: mesh size, time and memory limits", kSceneDoc);
-  PetscCall(getString(PetscOptionsObject, "-mesh_max_elements",
-                      "the largest mesh (cells of the mesh dimension) poroseam makes or reads",
-                      max_text, &max_set));
-  PetscCall(getString(PetscOptionsObject, "-mesh_time_limit",
-                      "seconds gmsh may take to mesh a .geo before it is stopped", time_text,
-                      &time_set));
-  PetscCall(PetscOptionsBool("-mesh_memory_check",
-                             "refuse a mesh whose estimated memory exceeds the machine's "
-                             "(0: run anyway)",
-                             kSceneDoc, check, &check, nullptr));
+  PetscCall(getString(PetscOptionsObject, spec(Option::mesh_max_elements), max_text, &max_set));
+  PetscCall(getString(PetscOptionsObject, spec(Option::mesh_time_limit), time_text, &time_set));
+  PetscCall(getFlag(PetscOptionsObject, spec(Option::mesh_memory_check), &check, nullptr));
   PetscOptionsEnd();
   if (max_set) {
     double v;
-    PetscCall(readNumber("-mesh_max_elements", max_text, 1, "a whole number >= 1", comm, &v));
+    PetscCall(readNumber(spec(Option::mesh_max_elements).flag, max_text, 1, "a whole number >= 1",
+                         comm, &v));
     PetscCheck(v == std::floor(v), comm, PETSC_ERR_USER_INPUT,
                "option -mesh_max_elements %s: expected a whole number >= 1", max_text.c_str());
     limits->max_elements = (long)v;
   }
   if (time_set) {
-    PetscCall(readNumber("-mesh_time_limit", time_text, 0, "a time in seconds > 0", comm,
-                         &limits->time_limit));
+    PetscCall(readNumber(spec(Option::mesh_time_limit).flag, time_text, 0, "a time in seconds > 0",
+                         comm, &limits->time_limit));
     PetscCheck(limits->time_limit > 0, comm, PETSC_ERR_USER_INPUT,
                "option -mesh_time_limit %s: expected a time in seconds > 0", time_text.c_str());
   }
@@ -120,14 +116,15 @@ PetscErrorCode readMeshLimits(MPI_Comm comm, int displacement_order, MeshLimits 
   // What the solver preset will choose (solver_preset.cpp reads these options for real).
   char buffer[256] = "";
   PetscBool set;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-solver_preset", buffer, sizeof buffer, &set));
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, spec(Option::solver_preset).flag, buffer,
+                                  sizeof buffer, &set));
   if (set) limits->preset = buffer;
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-pc_type", buffer, sizeof buffer, &set));
   if (set) limits->pc_type = buffer;
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-ksp_type", buffer, sizeof buffer, &set));
   if (set) limits->ksp_type = buffer;
-  PetscInt threshold = defaultAutoThreshold(displacement_order);
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-solver_auto_threshold", &threshold, &set));
+  PetscInt threshold;
+  PetscCall(readAutoThreshold(nullptr, comm, displacement_order, &threshold));
   limits->auto_threshold = (long)threshold;
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(comm, &size));

@@ -15,10 +15,9 @@ PetscErrorCode readPartitionerOption(MPI_Comm comm, PartitionerKind *kind, std::
   PetscBool set = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam partitioning", kSceneDoc);
-  PetscCall(PetscOptionsString("-partitioner",
-                               "how the cells are dealt out to the ranks: ptscotch, metis (keeps "
-                               "interfaces whole) or simple",
-                               kSceneDoc, "ptscotch", value, sizeof(value), &set));
+  const OptionSpec &option = spec(Option::partitioner);
+  PetscCall(PetscOptionsString(option.flag, option.help, option.doc, option.default_shown, value,
+                               sizeof(value), &set));
   PetscOptionsEnd();
   const std::string v = value;
   if (v == "ptscotch")

@@ -27,6 +27,7 @@
 #include "xdmf.hpp"
 
 #include "poroseam/mesh.hpp"
+#include "poroseam/option_registry.hpp"
 
 #include <petscdmplex.h>
 #include <petscsf.h>
@@ -278,11 +279,11 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
   im.h5Path = prefix + ".h5";
   PetscCall(im.closing.init(comm));
   im.dir = dir;
-  PetscCall(
-      PetscOptionsGetInt(nullptr, nullptr, "-test_io_fail_rank", &im.test_fail_rank, nullptr));
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, spec(Option::test_io_fail_rank).flag,
+                               &im.test_fail_rank, nullptr));
   { // read where an error needs it (xdmf::agreeOn); here too, so that it is never "unused"
     PetscReal grace;
-    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-io_agreement_timeout", &grace, nullptr));
+    PetscCall(xdmf::readAgreementTimeout(&grace));
   }
   im.xmfPath = prefix + ".xmf";
 

@@ -2,6 +2,7 @@
 #include "poroseam/output_directory.hpp"
 
 #include "poroseam/collective_check.hpp"
+#include "poroseam/option_registry.hpp"
 #include "poroseam/scene.hpp"
 
 #include <cerrno>
@@ -43,11 +44,14 @@ std::string runDirectory()
 {
   char buffer[PETSC_MAX_PATH_LEN] = "";
   PetscBool set = PETSC_FALSE;
-  if (!PetscOptionsGetString(nullptr, nullptr, "-restart", buffer, sizeof buffer, &set) && set &&
-      buffer[0])
+  if (!PetscOptionsGetString(nullptr, nullptr, spec(Option::restart).flag, buffer, sizeof buffer,
+                             &set) &&
+      set && buffer[0])
     return buffer;
   set = PETSC_FALSE;
-  if (!PetscOptionsGetString(nullptr, nullptr, "-output_dir", buffer, sizeof buffer, &set) && set)
+  if (!PetscOptionsGetString(nullptr, nullptr, spec(Option::output_dir).flag, buffer, sizeof buffer,
+                             &set) &&
+      set)
     return buffer;
   return Scene().output_dir;
 }

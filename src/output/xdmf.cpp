@@ -4,6 +4,7 @@
 #include "file_replace.hpp"
 
 #include "poroseam/collective_check.hpp"
+#include "poroseam/option_registry.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -40,6 +41,14 @@ PetscErrorCode createDirectory(MPI_Comm comm, const std::string &dir, const char
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode readAgreementTimeout(PetscReal *grace)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, spec(Option::io_agreement_timeout).flag, grace,
+                                nullptr));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode error, bool *failed)
 {
   PetscFunctionBeginUser;
@@ -65,7 +74,7 @@ PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode er
     // (-io_agreement_timeout, seconds) this rank says what failed and ends them all: the one
     // case where a run ends in MPI_Abort, rather than a hang.
     PetscReal grace = 120.0;
-    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-io_agreement_timeout", &grace, nullptr));
+    PetscCall(readAgreementTimeout(&grace));
     const double start = MPI_Wtime();
     for (int done = 0; !done;) {
       PetscCallMPI(MPI_Test(&request, &done, MPI_STATUS_IGNORE));

@@ -36,6 +36,10 @@ template <class Body>
 PetscErrorCode agreed(MPI_Comm comm, const std::string &file, bool *failed, Body body);
 PetscErrorCode agreeOn(MPI_Comm comm, const std::string &file, PetscErrorCode error, bool *failed);
 
+/// -io_agreement_timeout [s]: how long a rank whose output failed waits for the others in
+/// agreeOn before it ends them all (*grace unchanged when not given). Not collective.
+PetscErrorCode readAgreementTimeout(PetscReal *grace);
+
 template <class Body>
 PetscErrorCode agreed(MPI_Comm comm, const std::string &file, bool *failed, Body body)
 {

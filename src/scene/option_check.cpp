@@ -1,5 +1,7 @@
 #include "poroseam/option_check.hpp"
 
+#include "poroseam/option_registry.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -8,50 +10,17 @@
 namespace poroseam {
 namespace {
 
-/// Options of the whole scene and of the run, read by poroseam outside the families below
-/// (docs/scenes.md, docs/checkpoints.md; -mass_balance_krylov_test: mass_balance_test.hpp).
-/// -snes_reference_rtol and -snes_kink_linesearch are poroseam's too but live in PETSc's namespace,
-/// where a near miss may be PETSc's own.
-const char *const kSceneNames[] = {"mesh",
-                                   "mesh_size_factor",
-                                   "mesh_geometry_order",
-                                   "mesh_max_elements",
-                                   "mesh_time_limit",
-                                   "mesh_memory_check",
-                                   "regions",
-                                   "boundaries",
-                                   "interfaces",
-                                   "drained",
-                                   "axisymmetric",
-                                   "gravity",
-                                   "fluid_density",
-                                   "fluid_viscosity",
-                                   "stabilization_factor",
-                                   "displacement_order",
-                                   "initial_state",
-                                   "surface_elevation",
-                                   "water_level",
-                                   "water_load_boundaries",
-                                   "output_dir",
-                                   "output_fields_every",
-                                   "output_interfaces_every",
-                                   "partitioner",
-                                   "partitioner_report",
-                                   "solver_preset",
-                                   "solver_auto_threshold",
-                                   "mass_balance_krylov_test",
-                                   "checkpoint_every",
-                                   "checkpoint_rolling",
-                                   "checkpoint_rolling_interval",
-                                   "io_agreement_timeout",
-                                   "restart",
-                                   "restart_step",
-                                   "test_fail_dt_above",
-                                   "test_allow_crank_nicolson",
-                                   "test_step_delay",
-                                   "test_step_delay_after",
-                                   "test_io_fail_rank",
-                                   "options_unused_ok"};
+/// Options of the whole scene and of the run, read by poroseam outside the families below:
+/// the declared options in poroseam's namespace (options.def). -snes_reference_rtol and
+/// -snes_kink_linesearch are poroseam's too but live in PETSc's namespace, where a near miss
+/// may be PETSc's own.
+std::vector<std::string> declaredNames()
+{
+  std::vector<std::string> names;
+  for (const auto &s : optionRegistry())
+    if (s.space == OptionSpace::poroseam) names.emplace_back(s.name());
+  return names;
+}
 
 /// Options of PETSc's objects start with these: a near miss of a scene name among them is
 /// left to PETSc and to the check of options nothing reads (unused_options.hpp).
@@ -59,26 +28,6 @@ const char *const kPetscPrefixes[] = {"ts_",         "snes_",  "ksp_",   "pc_", 
                                       "dm_",         "log_",   "malloc", "options", "mg_",  "sub_",
                                       "petsc",       "viewer", "draw",   "is_",     "sf_",  "tao_",
                                       "fieldsplit_", "help",   "info",   "version", "mpi"};
-
-const char *const kRegionKeys[] = {"material",
-                                   "E",
-                                   "nu",
-                                   "rho_s",
-                                   "K0",
-                                   "ground",
-                                   "porosity",
-                                   "permeability",
-                                   "biot_alpha",
-                                   "storage",
-                                   "cohesion",
-                                   "friction_angle",
-                                   "dilation_angle",
-                                   "tension_cutoff"};
-const char *const kBoundaryQuantities[] = {"ux", "uy",       "uz",       "p",
-                                           "p3", "traction", "pressure", "flux"};
-const char *const kInterfaceKeys[] = {
-    "surfaces",       "side1",       "KN",   "KT", "friction", "dilation_angle",
-    "dilation_limit", "integration", "flow", "D0", "T1",       "T2"};
 
 /// The splits poroseam names (src/solve/nullspace.cpp), and the splits inside each.
 struct Split {
@@ -149,19 +98,19 @@ struct Family {
 std::vector<std::string> boundaryKeys()
 {
   std::vector<std::string> keys;
-  for (const char *q : kBoundaryQuantities) {
-    keys.emplace_back(q);
-    keys.push_back(std::string(q) + "_ramp");
-    keys.push_back(std::string(q) + "_table");
+  for (const auto &q : boundaryQuantities()) {
+    keys.push_back(q);
+    keys.push_back(q + "_ramp");
+    keys.push_back(q + "_table");
   }
   return keys;
 }
 
 std::vector<Family> families(const SceneNames &names)
 {
-  const std::vector<std::string> region(std::begin(kRegionKeys), std::end(kRegionKeys));
-  const std::vector<std::string> interface(std::begin(kInterfaceKeys), std::end(kInterfaceKeys));
-  const std::vector<std::string> bc(std::begin(kBoundaryQuantities), std::end(kBoundaryQuantities));
+  // The keys as declared (options.def).
+  const std::vector<std::string> region = regionKeys(), interface = interfaceKeys(),
+                                 bc = boundaryQuantities();
   return {{"region_", "region", "-regions", names.regions, region, names.dim, join(region)},
           {"bc_", "boundary", "-boundaries", names.boundaries, boundaryKeys(), names.dim - 1,
            join(bc) + ", each with _ramp or _table"},
@@ -312,15 +261,15 @@ std::string closestName(const std::string &word, const std::vector<std::string> 
 
 std::vector<std::string> sceneOptionNames()
 {
-  return std::vector<std::string>(std::begin(kSceneNames), std::end(kSceneNames));
+  return declaredNames();
 }
 
 bool isSceneOption(const std::string &name)
 {
   for (const char *prefix : {"region_", "bc_", "interface_", "probe_"})
     if (startsWith(name, prefix)) return true;
-  return std::any_of(std::begin(kSceneNames), std::end(kSceneNames),
-                     [&](const char *known) { return name == known; });
+  const OptionSpec *declared = findOption(name);
+  return declared && declared->space == OptionSpace::poroseam;
 }
 
 std::string misspeltOption(const std::string &name, const std::string &value,
@@ -334,11 +283,10 @@ std::string misspeltOption(const std::string &name, const std::string &value,
   const std::vector<Family> all = families(names);
   for (const auto &f : all)
     if (startsWith(name, f.prefix)) return scene_known ? checkFamily(f, name, names, given) : "";
-  for (const char *known : kSceneNames)
-    if (name == known) return "";
+  const std::vector<std::string> scene = declaredNames();
+  if (std::find(scene.begin(), scene.end(), name) != scene.end()) return "";
   for (const char *prefix : kPetscPrefixes)
     if (startsWith(name, prefix)) return "";
-  std::vector<std::string> scene(std::begin(kSceneNames), std::end(kSceneNames));
   const std::string meant = closest(name, scene);
   if (!meant.empty())
     return "option -" + name + " is not an option of poroseam" + suggestion(meant);

@@ -98,16 +98,16 @@ namespace {
 
 /// An element order, 1 or 2 (-mesh_geometry_order, -displacement_order): read as a number so
 /// that "1.5" or "3" is named in the error as given.
-PetscErrorCode readOrder(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const char *option,
-                         const char *help, const char *expected, int *order)
+PetscErrorCode readOrder(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
+                         const OptionSpec &option, const char *expected, int *order)
 {
   double value = *order;
   PetscFunctionBeginUser;
-  PetscCall(getReal(PetscOptionsObject, option, help, &value, nullptr));
+  PetscCall(getReal(PetscOptionsObject, option, &value, nullptr));
   char given[32];
   std::snprintf(given, sizeof given, "%g", value); // PETSc's %g would print "3."
-  PetscCheck(value == 1.0 || value == 2.0, comm, PETSC_ERR_USER_INPUT, "%s %s: expected %s", option,
-             given, expected);
+  PetscCheck(value == 1.0 || value == 2.0, comm, PETSC_ERR_USER_INPUT, "%s %s: expected %s",
+             option.flag, given, expected);
   *order = (int)value;
   PetscFunctionReturn(0);
 }
@@ -122,29 +122,21 @@ PetscErrorCode readMeshOptions(MPI_Comm comm, Scene &scene)
   PetscCall(checkOptionNames(comm, SceneNames{}));
   PetscOptionsBegin(comm, nullptr, "poroseam scene: mesh, element order and output directory",
                     kSceneDoc);
-  PetscCall(getString(PetscOptionsObject, "-mesh",
-                      "Gmsh mesh (.msh) or geometry (.geo, meshed by gmsh) (required)",
-                      scene.mesh_file, &set));
+  PetscCall(getString(PetscOptionsObject, spec(Option::mesh), scene.mesh_file, &set));
   PetscCheck(set, comm, PETSC_ERR_USER_INPUT,
              "missing option -mesh: name a Gmsh mesh (.msh) or geometry (.geo) file");
-  PetscCall(getReal(PetscOptionsObject, "-mesh_size_factor",
-                    "gmsh -clscale for a .geo [-] (0.5 halves every element size)",
-                    &scene.mesh_size_factor, nullptr));
+  PetscCall(getReal(PetscOptionsObject, spec(Option::mesh_size_factor), &scene.mesh_size_factor,
+                    nullptr));
   PetscCheck(scene.mesh_size_factor > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-mesh_size_factor %g: must be > 0", scene.mesh_size_factor);
-  PetscCall(readOrder(PetscOptionsObject, comm, "-mesh_geometry_order",
-                      "order of the cells' geometry: 1 (straight-sided) or 2 (second-order gmsh "
-                      "cells, curved along curved boundaries; needs -displacement_order 2)",
+  PetscCall(readOrder(PetscOptionsObject, comm, spec(Option::mesh_geometry_order),
                       "1 (straight-sided cells) or 2 (curved, second-order gmsh cells)",
                       &scene.mesh_geometry_order));
   // Read with the mesh: the memory estimate made before the mesh is read depends on it (the
   // solver preset auto chooses by order, solver_preset.hpp).
-  PetscCall(readOrder(PetscOptionsObject, comm, "-displacement_order",
-                      "order of the displacement elements: 1 (equal order, stabilised) or 2 "
-                      "(Taylor-Hood P2/P1, Q2/Q1; no stabilisation)",
+  PetscCall(readOrder(PetscOptionsObject, comm, spec(Option::displacement_order),
                       "1 (linear) or 2 (quadratic, Taylor-Hood)", &scene.displacement_order));
-  PetscCall(getString(PetscOptionsObject, "-output_dir", "directory of the results",
-                      scene.output_dir, nullptr));
+  PetscCall(getString(PetscOptionsObject, spec(Option::output_dir), scene.output_dir, nullptr));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
 }
@@ -158,32 +150,25 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   bool set = false;
   PetscFunctionBeginUser;
   scene.drained = false;
-  PetscCall(getFlag(PetscOptionsObject, "-drained",
-                    "drained analysis: no pressure unknowns anywhere", &scene.drained, nullptr));
+  PetscCall(getFlag(PetscOptionsObject, spec(Option::drained), &scene.drained, nullptr));
   scene.axisymmetric = false;
-  PetscCall(getFlag(PetscOptionsObject, "-axisymmetric",
-                    "2D meshes: axisymmetric about the y axis, x = r >= 0 (results per full "
-                    "circle)",
-                    &scene.axisymmetric, nullptr));
+  PetscCall(getFlag(PetscOptionsObject, spec(Option::axisymmetric), &scene.axisymmetric, nullptr));
   PetscCheck(!scene.axisymmetric || dim == 2, comm, PETSC_ERR_USER_INPUT,
              "-axisymmetric: needs a 2D mesh in the (r, z) = (x, y) plane; this mesh is %dD", dim);
-  PetscCall(getReal(PetscOptionsObject, "-gravity",
-                    "gravitational acceleration g [m/s2] along -y (2D) or -z (3D); 0: off",
-                    &scene.gravity, nullptr));
+  PetscCall(getReal(PetscOptionsObject, spec(Option::gravity), &scene.gravity, nullptr));
   PetscCheck(scene.gravity >= 0.0, comm, PETSC_ERR_USER_INPUT,
              "-gravity %g: give the magnitude g >= 0 (it acts along -y in 2D, -z in 3D)",
              scene.gravity);
-  PetscCall(getReal(PetscOptionsObject, "-fluid_density", "water density rho_w [kg/m3]",
-                    &scene.fluid_density, nullptr));
-  PetscCall(getReal(PetscOptionsObject, "-fluid_viscosity", "water viscosity mu_w [Pa s]",
-                    &scene.fluid_viscosity, nullptr));
+  PetscCall(
+      getReal(PetscOptionsObject, spec(Option::fluid_density), &scene.fluid_density, nullptr));
+  PetscCall(
+      getReal(PetscOptionsObject, spec(Option::fluid_viscosity), &scene.fluid_viscosity, nullptr));
   PetscCheck(scene.fluid_density > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-fluid_density %g: must be > 0", scene.fluid_density);
   PetscCheck(scene.fluid_viscosity > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-fluid_viscosity %g: must be > 0", scene.fluid_viscosity);
-  PetscCall(getReal(PetscOptionsObject, "-stabilization_factor",
-                    "pressure stabilisation factor F [-] (0 disables)", &scene.stabilization_factor,
-                    nullptr));
+  PetscCall(getReal(PetscOptionsObject, spec(Option::stabilization_factor),
+                    &scene.stabilization_factor, nullptr));
   PetscCheck(scene.stabilization_factor >= 0.0, comm, PETSC_ERR_USER_INPUT,
              "-stabilization_factor %g: must be >= 0", scene.stabilization_factor);
   // Isoparametric: the curved cell is mapped by the displacement's own quadratic basis.
@@ -193,28 +178,20 @@ PetscErrorCode readPhysics(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
              "displacement basis maps them; linear elements cannot follow the curve)");
 
   std::string initial = "none";
-  PetscCall(getString(PetscOptionsObject, "-initial_state",
-                      "none, or geostatic (K0 effective stresses and hydrostatic pressure)",
-                      initial, nullptr));
+  PetscCall(getString(PetscOptionsObject, spec(Option::initial_state), initial, nullptr));
   PetscCheck(initial == "none" || initial == "geostatic", comm, PETSC_ERR_USER_INPUT,
              "-initial_state %s: expected 'none' or 'geostatic'", initial.c_str());
   scene.geostatic = initial == "geostatic";
   PetscCheck(!scene.geostatic || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-initial_state geostatic needs -gravity > 0");
-  PetscCall(getReal(PetscOptionsObject, "-surface_elevation",
-                    "soil surface elevation [m] of the geostatic state", &scene.surface_elevation,
+  PetscCall(getReal(PetscOptionsObject, spec(Option::surface_elevation), &scene.surface_elevation,
                     nullptr));
   scene.water_level = scene.surface_elevation;
-  PetscCall(getReal(PetscOptionsObject, "-water_level",
-                    "phreatic level [m] of the hydrostatic pressure (default: the surface)",
-                    &scene.water_level, nullptr));
+  PetscCall(getReal(PetscOptionsObject, spec(Option::water_level), &scene.water_level, nullptr));
   // The free water above the ground pushes on the boundaries it stands on; the geostatic
   // state balances that load, so with water above the surface it must be applied.
   std::vector<std::string> names_w;
-  PetscCall(getStringList(PetscOptionsObject, "-water_load_boundaries",
-                          "boundaries the free water stands on (comma-separated): they carry "
-                          "its pressure",
-                          names_w, &set));
+  PetscCall(getStringList(PetscOptionsObject, spec(Option::water_load_boundaries), names_w, &set));
   PetscCheck(!set || scene.gravity > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-water_load_boundaries: the water's pressure needs -gravity > 0");
   scene.water_load_boundaries.clear();
@@ -282,18 +259,12 @@ PetscErrorCode readSceneOptions(MPI_Comm comm, const std::vector<PhysicalName> &
   std::vector<std::string> regions, interfaces, boundaries;
   PetscOptionsBegin(comm, nullptr, "poroseam scene: its parts (physical groups of the mesh)",
                     kSceneDoc);
-  PetscCall(getStringList(PetscOptionsObject, "-regions",
-                          "the regions (cell groups), comma-separated; every cell in one", regions,
-                          &set));
+  PetscCall(getStringList(PetscOptionsObject, spec(Option::regions), regions, &set));
   PetscCheck(set && !regions.empty(), comm, PETSC_ERR_USER_INPUT,
              "missing option -regions: list the mesh regions (cell physical names: %s)",
              joinNames(names, dim).c_str());
-  PetscCall(getStringList(PetscOptionsObject, "-boundaries",
-                          "the boundaries (face groups; physical points, 3D curves: supports) the "
-                          "scene uses, comma-separated",
-                          boundaries, &set));
-  PetscCall(getStringList(PetscOptionsObject, "-interfaces",
-                          "the zero-thickness interfaces, comma-separated", interfaces, &set));
+  PetscCall(getStringList(PetscOptionsObject, spec(Option::boundaries), boundaries, &set));
+  PetscCall(getStringList(PetscOptionsObject, spec(Option::interfaces), interfaces, &set));
   PetscOptionsEnd();
   PetscCall(checkListNames(comm, "-regions", regions));
   scene.regions.clear();

@@ -89,7 +89,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
                             const Boundary &b, std::vector<BoundaryCondition> &out)
 {
   const std::string p = "-bc_" + b.name + "_";
-  const char *comps[3] = {"ux", "uy", "uz"};
+  const char *comps[3] = {key(BoundaryKey::ux), key(BoundaryKey::uy), key(BoundaryKey::uz)};
   PetscFunctionBeginUser;
   auto add = [&](BoundaryCondition bc) -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -134,7 +134,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(condition("p", "prescribed pore pressure [Pa] (absolute: hydrostatic included)",
+    PetscCall(condition(key(BoundaryKey::p), "prescribed pore pressure [Pa] (absolute: hydrostatic included)",
                         scene.hasPressure(), &v, &set));
     if (set) {
       PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
@@ -142,14 +142,14 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       BoundaryCondition bc;
       bc.kind = BcKind::pressure;
       bc.value = {v};
-      bc.option = p + "p";
+      bc.option = p + key(BoundaryKey::p);
       PetscCall(add(bc));
     }
   }
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(condition("p3",
+    PetscCall(condition(key(BoundaryKey::p3),
                         "prescribed interface pressure p3 [Pa] where an interface with flow "
                         "meets the boundary",
                         scene.hasInterfacePressure(), &v, &set));
@@ -159,14 +159,14 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       BoundaryCondition bc;
       bc.kind = BcKind::interface_pressure;
       bc.value = {v};
-      bc.option = p + "p3";
+      bc.option = p + key(BoundaryKey::p3);
       PetscCall(add(bc));
     }
   }
   {
     std::vector<double> v;
     bool set = false;
-    PetscCall(getRealList(PetscOptionsObject, p + "traction",
+    PetscCall(getRealList(PetscOptionsObject, p + key(BoundaryKey::traction),
                           "applied traction [Pa], " + std::to_string(scene.dim) +
                               " comma-separated components (tension positive: sigma n)",
                           v, &set));
@@ -189,14 +189,14 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       BoundaryCondition bc;
       bc.kind = BcKind::traction;
       bc.value = v;
-      bc.option = p + "traction";
+      bc.option = p + key(BoundaryKey::traction);
       PetscCall(add(bc));
     }
   }
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(condition("pressure",
+    PetscCall(condition(key(BoundaryKey::pressure),
                         "normal pressure P [Pa] on the faces, t = -P n (positive pushes into "
                         "the body; not the pore pressure, -bc_<b>_p)",
                         true, &v, &set));
@@ -211,14 +211,14 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       BoundaryCondition bc;
       bc.kind = BcKind::normal_pressure;
       bc.value = {v};
-      bc.option = p + "pressure";
+      bc.option = p + key(BoundaryKey::pressure);
       PetscCall(add(bc));
     }
   }
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(condition("flux", "outward Darcy flux q.n [m/s] (positive: water leaves)",
+    PetscCall(condition(key(BoundaryKey::flux), "outward Darcy flux q.n [m/s] (positive: water leaves)",
                         scene.hasPressure(), &v, &set));
     if (set) {
       PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
@@ -235,7 +235,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
       BoundaryCondition bc;
       bc.kind = BcKind::flux;
       bc.value = {v};
-      bc.option = p + "flux";
+      bc.option = p + key(BoundaryKey::flux);
       PetscCall(add(bc));
     }
   }

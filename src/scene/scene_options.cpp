@@ -32,13 +32,15 @@ bool parseNumber(const std::string &text, double *value)
   return true;
 }
 
-PetscErrorCode getString(PetscOptionItems *PetscOptionsObject, const std::string &option,
-                         const std::string &help, std::string &value, bool *set)
+namespace {
+
+PetscErrorCode readString(PetscOptionItems *PetscOptionsObject, const std::string &option,
+                          const std::string &help, const char *doc, std::string &value, bool *set)
 {
   char buffer[PETSC_MAX_PATH_LEN] = "";
   PetscBool found = PETSC_FALSE;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsString(option.c_str(), help.c_str(), kSceneDoc,
+  PetscCall(PetscOptionsString(option.c_str(), help.c_str(), doc,
                                value.empty() ? "(none)" : value.c_str(), buffer, sizeof buffer,
                                &found));
   if (found) value = buffer;
@@ -46,13 +48,14 @@ PetscErrorCode getString(PetscOptionItems *PetscOptionsObject, const std::string
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode getReal(PetscOptionItems *PetscOptionsObject, const std::string &option,
-                       const std::string &help, double *value, bool *set, const char *unset)
+PetscErrorCode readReal(PetscOptionItems *PetscOptionsObject, const std::string &option,
+                        const std::string &help, const char *doc, double *value, bool *set,
+                        const char *unset)
 {
   char buffer[256] = "";
   PetscBool found = PETSC_FALSE;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsString(option.c_str(), help.c_str(), kSceneDoc,
+  PetscCall(PetscOptionsString(option.c_str(), help.c_str(), doc,
                                unset ? unset : shown(*value).c_str(), buffer, sizeof buffer,
                                &found));
   if (found) {
@@ -64,6 +67,20 @@ PetscErrorCode getReal(PetscOptionItems *PetscOptionsObject, const std::string &
   }
   if (set) *set = found;
   PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode getString(PetscOptionItems *PetscOptionsObject, const std::string &option,
+                         const std::string &help, std::string &value, bool *set)
+{
+  return readString(PetscOptionsObject, option, help, kSceneDoc, value, set);
+}
+
+PetscErrorCode getReal(PetscOptionItems *PetscOptionsObject, const std::string &option,
+                       const std::string &help, double *value, bool *set, const char *unset)
+{
+  return readReal(PetscOptionsObject, option, help, kSceneDoc, value, set, unset);
 }
 
 PetscErrorCode getRequiredReal(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
@@ -105,13 +122,16 @@ PetscErrorCode getRealList(PetscOptionItems *PetscOptionsObject, const std::stri
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode getStringList(PetscOptionItems *PetscOptionsObject, const std::string &option,
-                             const std::string &help, std::vector<std::string> &values, bool *set)
+namespace {
+
+PetscErrorCode readStringList(PetscOptionItems *PetscOptionsObject, const std::string &option,
+                              const std::string &help, const char *doc,
+                              std::vector<std::string> &values, bool *set)
 {
   std::string text;
   bool found = false;
   PetscFunctionBeginUser;
-  PetscCall(getString(PetscOptionsObject, option, help, text, &found));
+  PetscCall(readString(PetscOptionsObject, option, help, doc, text, &found));
   values.clear();
   if (found && !text.empty()) {
     std::string::size_type start = 0;
@@ -126,15 +146,53 @@ PetscErrorCode getStringList(PetscOptionItems *PetscOptionsObject, const std::st
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const std::string &option,
-                       const std::string &help, bool *value, bool *set)
+PetscErrorCode readFlag(PetscOptionItems *PetscOptionsObject, const std::string &option,
+                        const std::string &help, const char *doc, bool *value, bool *set)
 {
   PetscBool flag = *value ? PETSC_TRUE : PETSC_FALSE, found = PETSC_FALSE;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsBool(option.c_str(), help.c_str(), kSceneDoc, flag, &flag, &found));
+  PetscCall(PetscOptionsBool(option.c_str(), help.c_str(), doc, flag, &flag, &found));
   *value = flag;
   if (set) *set = found;
   PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode getStringList(PetscOptionItems *PetscOptionsObject, const std::string &option,
+                             const std::string &help, std::vector<std::string> &values, bool *set)
+{
+  return readStringList(PetscOptionsObject, option, help, kSceneDoc, values, set);
+}
+
+PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const std::string &option,
+                       const std::string &help, bool *value, bool *set)
+{
+  return readFlag(PetscOptionsObject, option, help, kSceneDoc, value, set);
+}
+
+PetscErrorCode getReal(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
+                       double *value, bool *set)
+{
+  return readReal(PetscOptionsObject, option.flag, option.help, option.doc, value, set, nullptr);
+}
+
+PetscErrorCode getString(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
+                         std::string &value, bool *set)
+{
+  return readString(PetscOptionsObject, option.flag, option.help, option.doc, value, set);
+}
+
+PetscErrorCode getStringList(PetscOptionItems *PetscOptionsObject, const OptionSpec &option,
+                             std::vector<std::string> &values, bool *set)
+{
+  return readStringList(PetscOptionsObject, option.flag, option.help, option.doc, values, set);
+}
+
+PetscErrorCode getFlag(PetscOptionItems *PetscOptionsObject, const OptionSpec &option, bool *value,
+                       bool *set)
+{
+  return readFlag(PetscOptionsObject, option.flag, option.help, option.doc, value, set);
 }
 
 } // namespace poroseam

@@ -58,18 +58,15 @@ PetscErrorCode readOutputOptions(MPI_Comm comm, Scene &scene)
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam output: fields and probes (-probe_<name>)", kSceneDoc);
   double every = scene.output_every;
-  PetscCall(getReal(PetscOptionsObject, "-output_fields_every",
-                    "HDF5/XDMF field output every N steps (0: none)", &every, nullptr));
+  PetscCall(getReal(PetscOptionsObject, spec(Option::output_fields_every), &every, nullptr));
   PetscCheck(every >= 0 && every == std::floor(every), comm, PETSC_ERR_USER_INPUT,
              "-output_fields_every %g: expected a whole number >= 0", every);
   scene.output_every = (int)every;
   // Interface output: with the fields unless a scene asks for more (the caisson scenes: every
   // step, for the mobilisation of friction within a few steps).
   double interface_every = scene.output_every;
-  PetscCall(getReal(PetscOptionsObject, "-output_interfaces_every",
-                    "HDF5/XDMF interface output every N steps (0: none; default: as "
-                    "-output_fields_every)",
-                    &interface_every, nullptr));
+  PetscCall(getReal(PetscOptionsObject, spec(Option::output_interfaces_every), &interface_every,
+                    nullptr));
   PetscCheck(interface_every >= 0 && interface_every == std::floor(interface_every), comm,
              PETSC_ERR_USER_INPUT, "-output_interfaces_every %g: expected a whole number >= 0",
              interface_every);

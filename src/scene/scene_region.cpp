@@ -19,7 +19,7 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
   std::string material;
   bool set = false;
   PetscFunctionBeginUser;
-  PetscCall(getString(PetscOptionsObject, p + "material",
+  PetscCall(getString(PetscOptionsObject, p + key(RegionKey::material),
                       "material: elastic (solid only), biot (porous, with pore pressure) or "
                       "mohr_coulomb (porous, Mohr-Coulomb skeleton)",
                       material, &set));
@@ -38,22 +38,22 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
             "%smaterial %s: expected 'elastic', 'biot' or 'mohr_coulomb'", p.c_str(),
             material.c_str());
 
-  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "E",
+  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + key(RegionKey::E),
                             "Young's modulus [Pa] of region " + r.name, &r.young));
   PetscCheck(r.young > 0.0, comm, PETSC_ERR_USER_INPUT, "%sE = %g: Young's modulus must be > 0",
              p.c_str(), r.young);
-  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "nu",
+  PetscCall(getRequiredReal(PetscOptionsObject, comm, p + key(RegionKey::nu),
                             "Poisson's ratio [-] of region " + r.name, &r.poisson));
   PetscCheck(r.poisson > -1.0 && r.poisson < 0.5, comm, PETSC_ERR_USER_INPUT,
              "%snu = %g: Poisson's ratio must lie in (-1, 0.5)", p.c_str(), r.poisson);
-  PetscCall(getReal(PetscOptionsObject, p + "rho_s",
+  PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::rho_s),
                     "grain (or solid) density rho_s [kg/m3], >= 0 (its weight with -gravity)",
                     &r.solid_density, nullptr));
   PetscCheck(r.solid_density >= 0.0, comm, PETSC_ERR_USER_INPUT,
              "%srho_s = %g: density must be >= 0", p.c_str(), r.solid_density);
   r.k0 = r.poisson / (1.0 - r.poisson);
   bool k0_given = false;
-  PetscCall(getReal(PetscOptionsObject, p + "K0",
+  PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::K0),
                     "earth pressure coefficient at rest K0 [-] of the geostatic state "
                     "(default nu/(1-nu))",
                     &r.k0, &k0_given));
@@ -73,7 +73,7 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
   {
     // Read as text so that a bad value gets our one-line message, not PETSc's trace.
     std::string ground = r.inGround() ? "true" : "false";
-    PetscCall(getString(PetscOptionsObject, p + "ground",
+    PetscCall(getString(PetscOptionsObject, p + key(RegionKey::ground),
                         "part of the ground column of the geostatic state: true or false "
                         "(default: true for biot, false for elastic)",
                         ground, &set));
@@ -97,26 +97,26 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
              "ratio of horizontal to vertical effective stress at rest)",
              r.k0_origin.c_str(), p.c_str());
   if (r.porous()) {
-    PetscCall(getReal(PetscOptionsObject, p + "porosity", "porosity n [-], in [0, 1)", &r.porosity,
+    PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::porosity), "porosity n [-], in [0, 1)", &r.porosity,
                       nullptr));
     PetscCheck(r.porosity >= 0.0 && r.porosity < 1.0, comm, PETSC_ERR_USER_INPUT,
                "%sporosity = %g: must lie in [0, 1)", p.c_str(), r.porosity);
     if (!drained) {
-      PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "permeability",
+      PetscCall(getRequiredReal(PetscOptionsObject, comm, p + key(RegionKey::permeability),
                                 "intrinsic permeability [m2] of biot region " + r.name,
                                 &r.permeability));
     } else {
-      PetscCall(getReal(PetscOptionsObject, p + "permeability",
+      PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::permeability),
                         "intrinsic permeability k [m2] (unused in a drained scene)",
                         &r.permeability, nullptr));
     }
     PetscCheck(r.permeability >= 0.0, comm, PETSC_ERR_USER_INPUT,
                "%spermeability = %g: must be >= 0", p.c_str(), r.permeability);
-    PetscCall(getReal(PetscOptionsObject, p + "biot_alpha", "Biot coefficient alpha [-], in (0, 1]",
+    PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::biot_alpha), "Biot coefficient alpha [-], in (0, 1]",
                       &r.biot_coefficient, nullptr));
     PetscCheck(r.biot_coefficient > 0.0 && r.biot_coefficient <= 1.0, comm, PETSC_ERR_USER_INPUT,
                "%sbiot_alpha = %g: must lie in (0, 1]", p.c_str(), r.biot_coefficient);
-    PetscCall(getReal(PetscOptionsObject, p + "storage",
+    PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::storage),
                       "storage 1/M [1/Pa], >= 0 (0: incompressible grains and water)", &r.storage,
                       nullptr));
     PetscCheck(r.storage >= 0.0, comm, PETSC_ERR_USER_INPUT, "%sstorage = %g: 1/M must be >= 0",
@@ -125,12 +125,12 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
   if (r.model == MaterialModel::mohr_coulomb) {
     // Strength of the skeleton (effective stress): c, phi, psi (non-associated when psi < phi)
     // and the optional tension cut-off on the largest principal effective stress.
-    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "cohesion",
+    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + key(RegionKey::cohesion),
                               "cohesion c [Pa] of region " + r.name, &r.cohesion));
-    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "friction_angle",
+    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + key(RegionKey::friction_angle),
                               "friction angle phi [degrees] of region " + r.name,
                               &r.friction_angle));
-    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + "dilation_angle",
+    PetscCall(getRequiredReal(PetscOptionsObject, comm, p + key(RegionKey::dilation_angle),
                               "dilation angle psi [degrees] of region " + r.name,
                               &r.dilation_angle));
     PetscCheck(r.cohesion >= 0.0, comm, PETSC_ERR_USER_INPUT,
@@ -148,7 +148,7 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
                "%g] (%sfriction_angle)",
                p.c_str(), r.dilation_angle, r.friction_angle, p.c_str());
     bool cutoff = false;
-    PetscCall(getReal(PetscOptionsObject, p + "tension_cutoff",
+    PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::tension_cutoff),
                       "tension cut-off [Pa] on the largest principal effective stress of region " +
                           r.name + ", in [0, c / tan(phi)] (optional; none: the cone's apex)",
                       &r.tension_cutoff, &cutoff, "none"));

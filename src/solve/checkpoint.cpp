@@ -1,4 +1,5 @@
 #include "checkpoint.hpp"
+#include "poroseam/option_registry.hpp"
 
 #include "poroseam/disk_space.hpp"
 
@@ -425,17 +426,15 @@ PetscErrorCode readCheckpointOptions(MPI_Comm comm, Run &run, RestartOptions *re
   PetscInt every = 0, step = -1;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam checkpoints and restarts", "docs/checkpoints.md");
-  PetscCall(PetscOptionsInt("-checkpoint_every",
-                            "a checkpoint every N steps (0: only when a run stops early)",
-                            "docs/checkpoints.md", every, &every, nullptr));
-  PetscCall(PetscOptionsString("-restart",
-                               "continue the run in this output directory from its latest "
-                               "checkpoint",
-                               "docs/checkpoints.md", "(none)", dir, sizeof(dir), &set));
-  PetscCall(PetscOptionsInt("-restart_step",
-                            "with -restart: continue from this step's checkpoint (-1, the "
-                            "default: the latest)",
-                            "docs/checkpoints.md", step, &step, &step_set));
+  const OptionSpec &every_option = spec(Option::checkpoint_every);
+  const OptionSpec &restart_option = spec(Option::restart);
+  const OptionSpec &step_option = spec(Option::restart_step);
+  PetscCall(PetscOptionsInt(every_option.flag, every_option.help, every_option.doc, every, &every,
+                            nullptr));
+  PetscCall(PetscOptionsString(restart_option.flag, restart_option.help, restart_option.doc,
+                               restart_option.default_shown, dir, sizeof(dir), &set));
+  PetscCall(
+      PetscOptionsInt(step_option.flag, step_option.help, step_option.doc, step, &step, &step_set));
   PetscOptionsEnd();
   PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT,
              "-checkpoint_every %d: expected a number of steps >= 0 (0: checkpoints only when a "

@@ -2,6 +2,7 @@
 // include/poroseam/mass_balance_test.hpp for why.
 
 #include "poroseam/mass_balance_test.hpp"
+#include "poroseam/option_registry.hpp"
 
 #include "poroseam/layout.hpp"
 
@@ -101,10 +102,8 @@ PetscErrorCode configureMassBalanceTest(KSP ksp, DM dm)
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam Krylov test",
                     "include/poroseam/mass_balance_test.hpp");
-  PetscCall(PetscOptionsBool("-mass_balance_krylov_test",
-                             "an iterative Newton solve also stops only when the mass-balance "
-                             "rows, weighted by |diag|^-1/2, meet its tolerance",
-                             "include/poroseam/mass_balance_test.hpp", use, &use, nullptr));
+  const OptionSpec &option = spec(Option::mass_balance_krylov_test);
+  PetscCall(PetscOptionsBool(option.flag, option.help, option.doc, use, &use, nullptr));
   PetscOptionsEnd();
   PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPPREONLY, &direct));
   PetscCall(KSPGetDiagonalScale(ksp, &scaled));

@@ -1,6 +1,7 @@
 // When Newton stops, how exactly each linear solve is asked to be, and where Newton starts
 // (split from simulation.cpp).
 
+#include "poroseam/option_registry.hpp"
 #include "run.hpp"
 
 #include "poroseam/newton_forcing.hpp"
@@ -419,10 +420,8 @@ PetscErrorCode configureLineSearch(Run &run, SNES snes)
   PetscFunctionBeginUser;
   PetscOptionsBegin(PetscObjectComm((PetscObject)snes), nullptr, "poroseam line search",
                     "docs/scenes.md");
-  PetscCall(PetscOptionsBool("-snes_kink_linesearch",
-                             "poroseam's line search through the contact and friction kinks "
-                             "(default: on with interfaces)",
-                             "docs/scenes.md", use, &use, nullptr));
+  const OptionSpec &option = spec(Option::snes_kink_linesearch);
+  PetscCall(PetscOptionsBool(option.flag, option.help, option.doc, use, &use, nullptr));
   PetscOptionsEnd();
   if (!use) PetscFunctionReturn(0);
   PetscCall(SNESGetLineSearch(snes, &ls));
@@ -437,10 +436,8 @@ PetscErrorCode configureKeepPreconditioner(Run &run, SNES snes)
   PetscFunctionBeginUser;
   PetscOptionsBegin(PetscObjectComm((PetscObject)snes), nullptr, "poroseam linear solver reuse",
                     "docs/performance.md");
-  PetscCall(PetscOptionsBool("-snes_keep_preconditioner",
-                             "keep the factorisation or preconditioner while the Jacobian is "
-                             "unchanged (linear scenes at a fixed step)",
-                             "docs/performance.md", run.keep_preconditioner,
+  const OptionSpec &option = spec(Option::snes_keep_preconditioner);
+  PetscCall(PetscOptionsBool(option.flag, option.help, option.doc, run.keep_preconditioner,
                              &run.keep_preconditioner, nullptr));
   PetscOptionsEnd();
   PetscCall(SNESGetLagPreconditioner(snes, &lag)); // the user's own lag wins over keeping it

@@ -1,6 +1,7 @@
 #include "restart_check.hpp"
 
 #include "poroseam/option_check.hpp"
+#include "poroseam/option_registry.hpp"
 #include "poroseam/scene_options.hpp"
 
 #include <algorithm>
@@ -18,24 +19,20 @@ namespace poroseam {
 namespace simulation_detail {
 namespace {
 
-/// Options a restart may change, by the start of their name (without '-'). Anything else a
-/// run was given is compared, so that a physics option added later is safe by default.
+/// Options of PETSc and its objects a restart may change, by the start of their name (without
+/// '-'); poroseam's own a restart may change are declared so (options.def, may_change).
+/// Anything else a run was given is compared, so that a physics option added later is safe by
+/// default.
 const char *const kMayChange[] = {
     // How the equations are solved: the choice of Newton, Krylov method and preconditioner
     // (also inside splits) and their tolerances. A tolerance changes the answer within itself
     // (docs/checkpoints.md): loosening one on a restart is the user's choice, as on a new run.
     "ksp_", "pc_", "snes_", "mat_", "fieldsplit_", "mg_", "sub_", "redundant_", "vertex_blocks_",
-    "schur_selfp_", "esteig_", "solver_preset", "solver_auto_threshold", "mass_balance_krylov_test",
-    // What is written and where (-output_dir: a restart writes into the directory it continues).
-    "output_dir", "output_fields_every", "output_interfaces_every", "partitioner_report",
+    "schur_selfp_", "esteig_",
+    // What is written.
     "ts_monitor", "ts_view", "ts_adapt_monitor", "dm_view",
-    // The run's own controls: checkpoints, restart, guards against a run that does not end.
-    "checkpoint_every", "checkpoint_rolling", "restart", "ts_max_steps", "ts_max_reject",
-    "ts_max_snes_failures", "ts_error_if_step_fails", "mesh_max_elements", "mesh_time_limit",
-    "mesh_memory_check", "io_agreement_timeout",
-    // The test suite's hooks (-test_*: forced failures, slow steps), which change how a run
-    // behaves, never what it computes.
-    "test_",
+    // The run's guards against a run that does not end.
+    "ts_max_steps", "ts_max_reject", "ts_max_snes_failures", "ts_error_if_step_fails",
     // Profiling, debugging and PETSc's runtime.
     "log", "malloc", "options_", "help", "info", "version", "viewer", "draw", "on_error",
     "no_signal_handler", "history", "debugger", "start_in_debugger", "stop_for_debugger",
@@ -217,6 +214,8 @@ PetscErrorCode checkOutputFiles(MPI_Comm comm, const std::string &dir,
 
 bool restartMayChange(const std::string &name)
 {
+  const OptionSpec *declared = findOption(name);
+  if (declared) return declared->restart == OptionRestart::may_change;
   return std::any_of(std::begin(kMayChange), std::end(kMayChange), [&](const char *prefix) {
     return name.compare(0, std::char_traits<char>::length(prefix), prefix) == 0;
   });

@@ -18,7 +18,8 @@ namespace simulation_detail {
 /// Whether an option may differ between a run and its restart: the choice and tolerances of
 /// the solvers, what is written and how often, profiling, PETSc's runtime and the run's own
 /// controls (checkpoints, restart, step limits). Every other option given is compared, so that
-/// an option added later is compared unless declared here. (-ts_max_time: checkFinalTime.)
+/// an option added later is compared unless declared may_change (options.def) or, for PETSc's,
+/// listed in restart_check.cpp. (-ts_max_time: checkFinalTime.)
 bool restartMayChange(const std::string &name);
 
 /// The options given to this run, as the options file a checkpoint keeps (one "-name value" a

@@ -1,4 +1,5 @@
 #include "rolling_checkpoint.hpp"
+#include "poroseam/option_registry.hpp"
 
 #include "checkpoint.hpp"
 #include "run.hpp"
@@ -33,15 +34,12 @@ PetscErrorCode readRollingCheckpointOptions(MPI_Comm comm, RollingCheckpoint *ro
   PetscReal interval = rolling->interval;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam rolling checkpoint", "docs/checkpoints.md");
-  PetscCall(PetscOptionsBool("-checkpoint_rolling",
-                             "keep a checkpoint of the last accepted step (replaced after each "
-                             "step): a run stopped or killed from outside loses no step",
-                             "docs/checkpoints.md", enabled, &enabled, nullptr));
-  PetscCall(PetscOptionsReal("-checkpoint_rolling_interval",
-                             "with -checkpoint_rolling: at least this wall time [s] between two "
-                             "rolling checkpoints (0: after every step; -1: after every step "
-                             "that keeps their cost below 10% of the run's wall time)",
-                             "docs/checkpoints.md", interval, &interval, nullptr));
+  const OptionSpec &rolling_option = spec(Option::checkpoint_rolling);
+  const OptionSpec &interval_option = spec(Option::checkpoint_rolling_interval);
+  PetscCall(PetscOptionsBool(rolling_option.flag, rolling_option.help, rolling_option.doc, enabled,
+                             &enabled, nullptr));
+  PetscCall(PetscOptionsReal(interval_option.flag, interval_option.help, interval_option.doc,
+                             interval, &interval, nullptr));
   PetscOptionsEnd();
   PetscCheck(interval >= 0.0 || interval == -1.0, comm, PETSC_ERR_USER_INPUT,
              "-checkpoint_rolling_interval %g: expected a wall time >= 0 s (0: a rolling "

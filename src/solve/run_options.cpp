@@ -2,6 +2,7 @@
 
 #include "poroseam/collective_check.hpp"
 #include "poroseam/option_check.hpp"
+#include "poroseam/option_registry.hpp"
 #include "poroseam/scene.hpp"
 
 #include <algorithm>
@@ -21,61 +22,55 @@
 namespace poroseam {
 namespace {
 
-/// Integer options read by poroseam or by the PETSc objects it sets up, by their name without
-/// a solver prefix (-fieldsplit_displacement_ksp_max_it matches ksp_max_it).
-const char *const kIntegerOptions[] = {"ts_max_steps",
-                                       "ts_max_reject",
-                                       "ts_max_snes_failures",
-                                       "ts_bdf_order",
-                                       "snes_max_it",
-                                       "snes_max_funcs",
-                                       "snes_max_fail",
-                                       "snes_max_linear_solve_fail",
-                                       "snes_lag_jacobian",
-                                       "snes_lag_preconditioner",
-                                       "ksp_max_it",
-                                       "ksp_gmres_restart",
-                                       "pc_mg_levels",
-                                       "pc_gamg_agg_nsmooths",
-                                       "pc_hypre_boomeramg_max_iter",
-                                       "pc_hypre_boomeramg_max_levels",
-                                       "snes_linesearch_max_it",
-                                       "ksp_chebyshev_esteig_steps",
-                                       "pc_factor_levels",
-                                       "pc_asm_overlap",
-                                       "pc_hypre_boomeramg_agg_nl",
-                                       "pc_hypre_boomeramg_agg_num_paths",
-                                       "pc_fieldsplit_block_size",
-                                       "vertex_blocks_coarse_lag",
-                                       "vertex_blocks_dump_operator_setup",
-                                       "solver_auto_threshold",
-                                       "checkpoint_every",
-                                       "restart_step",
-                                       "test_io_fail_rank"};
-/// Options poroseam reads as numbers that must be whole (a count of steps).
-const char *const kWholeNumberOptions[] = {"output_fields_every", "output_interfaces_every"};
-/// Real options, likewise.
-const char *const kRealOptions[] = {"ts_dt",
-                                    "ts_max_time",
-                                    "ts_rtol",
-                                    "ts_atol",
-                                    "ts_adapt_dt_min",
-                                    "ts_adapt_dt_max",
-                                    "ts_adapt_safety",
-                                    "ts_adapt_reject_safety",
-                                    "ts_adapt_scale_solve_failed",
-                                    "ts_adapt_clip",
-                                    "snes_rtol",
-                                    "snes_atol",
-                                    "snes_stol",
-                                    "snes_divergence_tolerance",
-                                    "snes_reference_rtol",
-                                    "ksp_rtol",
-                                    "ksp_atol",
-                                    "ksp_divtol",
-                                    "test_fail_dt_above",
-                                    "io_agreement_timeout",
-                                    "pc_factor_shift_amount"};
+/// Integer options read by the PETSc objects poroseam sets up, by their name without a solver
+/// prefix (-fieldsplit_displacement_ksp_max_it matches ksp_max_it); poroseam's own come from
+/// their declarations (options.def, checked before_run). The two vertex_blocks_ options are
+/// poroseam's preconditioner's (src/solve/vertex_blocks*.cpp), read with a solver prefix like
+/// PETSc's own.
+const char *const kPetscIntegerOptions[] = {"ts_max_steps",
+                                            "ts_max_reject",
+                                            "ts_max_snes_failures",
+                                            "ts_bdf_order",
+                                            "snes_max_it",
+                                            "snes_max_funcs",
+                                            "snes_max_fail",
+                                            "snes_max_linear_solve_fail",
+                                            "snes_lag_jacobian",
+                                            "snes_lag_preconditioner",
+                                            "ksp_max_it",
+                                            "ksp_gmres_restart",
+                                            "pc_mg_levels",
+                                            "pc_gamg_agg_nsmooths",
+                                            "pc_hypre_boomeramg_max_iter",
+                                            "pc_hypre_boomeramg_max_levels",
+                                            "snes_linesearch_max_it",
+                                            "ksp_chebyshev_esteig_steps",
+                                            "pc_factor_levels",
+                                            "pc_asm_overlap",
+                                            "pc_hypre_boomeramg_agg_nl",
+                                            "pc_hypre_boomeramg_agg_num_paths",
+                                            "pc_fieldsplit_block_size",
+                                            "vertex_blocks_coarse_lag",
+                                            "vertex_blocks_dump_operator_setup"};
+/// Real options of PETSc's objects, likewise.
+const char *const kPetscRealOptions[] = {"ts_dt",
+                                         "ts_max_time",
+                                         "ts_rtol",
+                                         "ts_atol",
+                                         "ts_adapt_dt_min",
+                                         "ts_adapt_dt_max",
+                                         "ts_adapt_safety",
+                                         "ts_adapt_reject_safety",
+                                         "ts_adapt_scale_solve_failed",
+                                         "ts_adapt_clip",
+                                         "snes_rtol",
+                                         "snes_atol",
+                                         "snes_stol",
+                                         "snes_divergence_tolerance",
+                                         "ksp_rtol",
+                                         "ksp_atol",
+                                         "ksp_divtol",
+                                         "pc_factor_shift_amount"};
 
 /// Whether `option` is `base` or `<prefix>_base`.
 bool matches(const std::string &option, const std::string &base)
@@ -84,6 +79,32 @@ bool matches(const std::string &option, const std::string &base)
   return option.size() > base.size() + 1 &&
          option.compare(option.size() - base.size(), base.size(), base) == 0 &&
          option[option.size() - base.size() - 1] == '_';
+}
+
+/// Whether `option` is one of poroseam's declared options of `kind` whose value is checked
+/// before the run (options.def), with or without a solver prefix.
+bool declaredAs(const std::string &option, OptionKind kind)
+{
+  for (const auto &s : optionRegistry())
+    if (s.kind == kind && s.check == OptionCheck::before_run && matches(option, s.name()))
+      return true;
+  return false;
+}
+
+/// Integer options: PETSc's and poroseam's.
+bool isIntegerOption(const std::string &option)
+{
+  return declaredAs(option, OptionKind::integer) ||
+         std::any_of(std::begin(kPetscIntegerOptions), std::end(kPetscIntegerOptions),
+                     [&](const char *base) { return matches(option, base); });
+}
+
+/// Real options: PETSc's and poroseam's.
+bool isRealOption(const std::string &option)
+{
+  return declaredAs(option, OptionKind::real) ||
+         std::any_of(std::begin(kPetscRealOptions), std::end(kPetscRealOptions),
+                     [&](const char *base) { return matches(option, base); });
 }
 
 /// MUMPS's integer controls, -mat_mumps_icntl_<n> (with any solver prefix).
@@ -138,12 +159,9 @@ bool parsesAsReal(const std::string &text, PetscReal *value)
 std::string integerRangeError(const std::string &option, const std::string &value)
 {
   const std::string name = option.substr(option.find_first_not_of('-'));
-  const bool integer =
-      isMumpsIcntl(name) || std::any_of(std::begin(kIntegerOptions), std::end(kIntegerOptions),
-                                        [&](const char *base) { return matches(name, base); });
+  const bool integer = isMumpsIcntl(name) || isIntegerOption(name);
   if (integer && !fitsInt(value)) return "out of range, expected an integer " + intRange();
-  for (const char *base : kWholeNumberOptions) {
-    if (!matches(name, base)) continue;
+  if (declaredAs(name, OptionKind::whole_number)) {
     char *end = nullptr;
     const double v = std::strtod(value.c_str(), &end);
     if (end != value.c_str() && std::isfinite(v) && std::fabs(v) > (double)PETSC_MAX_INT)
@@ -165,8 +183,7 @@ PetscErrorCode checkNumericOptions(MPI_Comm comm)
       PetscCheck(fitsInt(value), comm, PETSC_ERR_USER_INPUT,
                  "option -%s %s: out of range, expected an integer %s", name.c_str(), value.c_str(),
                  intRange().c_str());
-    if (std::any_of(std::begin(kIntegerOptions), std::end(kIntegerOptions),
-                    [&](const char *base) { return matches(name, base); })) {
+    if (isIntegerOption(name)) {
       PetscInt v = 0;
       PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT,
                  "option -%s has no value: expected an integer", name.c_str());
@@ -184,19 +201,17 @@ PetscErrorCode checkNumericOptions(MPI_Comm comm)
                    "option -ts_max_reject %s: must be >= 0 (cuts of the time step allowed per "
                    "step; a negative number would halve the step without end)",
                    value.c_str());
-      if (name == "solver_auto_threshold")
-        PetscCheck(v >= 0, comm, PETSC_ERR_USER_INPUT,
-                   "option -solver_auto_threshold %s: must be >= 0 (unknowns)", value.c_str());
+      if (name == spec(Option::solver_auto_threshold).name())
+        PetscCheck(v >= 0, comm, PETSC_ERR_USER_INPUT, "option %s %s: must be >= 0 (unknowns)",
+                   spec(Option::solver_auto_threshold).flag, value.c_str());
     }
-    for (const char *base : kWholeNumberOptions) {
-      if (!matches(name, base)) continue;
+    if (declaredAs(name, OptionKind::whole_number)) {
       PetscReal v = 0;
       PetscCheck(!parsesAsReal(value, &v) || std::fabs(v) <= (PetscReal)PETSC_MAX_INT, comm,
                  PETSC_ERR_USER_INPUT, "option -%s %s: out of range, expected a whole number %s",
                  name.c_str(), value.c_str(), intRange().c_str());
     }
-    for (const char *base : kRealOptions) {
-      if (!matches(name, base)) continue;
+    if (isRealOption(name)) {
       PetscReal v = 0;
       PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT,
                  "option -%s has no value: expected a number", name.c_str());
@@ -221,7 +236,8 @@ PetscErrorCode checkOutputDirectory(MPI_Comm comm)
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-output_dir", buffer, sizeof buffer, &set));
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, spec(Option::output_dir).flag, buffer,
+                                  sizeof buffer, &set));
   const std::string dir = set ? buffer : Scene().output_dir;
   PetscCheck(!dir.empty(), comm, PETSC_ERR_USER_INPUT,
              "option -output_dir has no value: name the directory for the results");

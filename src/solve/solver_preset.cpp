@@ -1,5 +1,9 @@
 #include "poroseam/solver_preset.hpp"
 
+#include "poroseam/option_registry.hpp"
+
+#include "poroseam/auto_threshold.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -133,23 +137,14 @@ PetscErrorCode applySolverPreset(MPI_Comm comm, int dim, int displacement_order,
 {
   char buffer[256] = "auto";
   PetscBool given;
-  PetscInt threshold = defaultAutoThreshold(displacement_order);
+  PetscInt threshold;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam solver preset", "docs/scenes.md");
-  PetscCall(PetscOptionsString("-solver_preset",
-                               "auto (the default), direct, fieldsplit or <name>: insert "
-                               "options/solvers/<name>.opts (options not set already); auto: "
-                               "direct, fieldsplit in 3D above -solver_auto_threshold, none "
-                               "when -ksp_type or -pc_type is given",
-                               "docs/scenes.md", "auto", buffer, sizeof buffer, &given));
-  PetscCall(PetscOptionsInt("-solver_auto_threshold",
-                            "unknowns above which auto chooses the iterative preset in 3D "
-                            "(default 30000 at -displacement_order 1, 150000 at 2)",
-                            "docs/scenes.md", threshold, &threshold, nullptr));
+  const OptionSpec &preset = spec(Option::solver_preset);
+  PetscCall(PetscOptionsString(preset.flag, preset.help, preset.doc, preset.default_shown, buffer,
+                               sizeof buffer, &given));
+  PetscCall(readAutoThreshold(PetscOptionsObject, comm, displacement_order, &threshold));
   PetscOptionsEnd();
-  PetscCheck(threshold >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-solver_auto_threshold %" PetscInt_FMT ": expected a number of unknowns >= 0",
-             threshold);
   // The solver is the user's own when -ksp_type or -pc_type is set (scene, options file,
   // command line); then auto, the default, inserts nothing. Any other -ksp_*, -pc_*, -snes_*
   // option only tunes the preset: it keeps its value (insertUnset).

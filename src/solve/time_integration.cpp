@@ -1,6 +1,7 @@
 #include "poroseam/time_integration.hpp"
 
 #include "poroseam/layout.hpp"
+#include "poroseam/option_registry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -138,7 +139,8 @@ PetscErrorCode TimeIntegration::afterOptions(TS ts, DM dm, const Problem &proble
     // every step. Crank-Nicolson's amplification tends to -1 for the stiff pressure modes.
     // The test hook lets that test keep measuring it (constant prescribed values only).
     PetscBool allow = PETSC_FALSE;
-    PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-test_allow_crank_nicolson", &allow, nullptr));
+    PetscCall(PetscOptionsGetBool(nullptr, nullptr, spec(Option::test_allow_crank_nicolson).flag,
+                                  &allow, nullptr));
     PetscCheck(allow, comm, PETSC_ERR_USER_INPUT,
                "-ts_type %s: refused: Crank-Nicolson (theta 0.5) makes the pore pressure "
                "oscillate after a sudden load (measured: docs/time_stepping.md); for second order "

@@ -5,6 +5,8 @@
 // which PETSc reads the options (-help, -options_left): keep it.
 #include "run_steps.hpp"
 
+#include "poroseam/option_registry.hpp"
+
 #include "restart_check.hpp"
 
 #include "poroseam/mass_balance_test.hpp"
@@ -52,18 +54,18 @@ PetscErrorCode configureNewton(MPI_Comm comm, Run &run, SNES snes)
   PetscFunctionBeginUser;
   PetscCall(SNESSetType(snes, SNESNEWTONLS));
   PetscOptionsBegin(comm, nullptr, "poroseam Newton convergence", "docs/scenes.md");
-  PetscCall(PetscOptionsReal("-snes_reference_rtol",
-                             "Newton converges below this fraction of the run's force scale",
-                             "docs/scenes.md", run.reference_rtol, &run.reference_rtol, nullptr));
-  PetscCall(PetscOptionsReal("-test_fail_dt_above",
-                             "test hook: step attempts with a dt above this [s] fail (0: off)",
-                             "tests/solve", run.fail_dt_above, &run.fail_dt_above, nullptr));
-  PetscCall(PetscOptionsReal("-test_step_delay",
-                             "test hook: each residual evaluation of a step waits this long [s]",
-                             "scripts/stop_trials", run.step_delay, &run.step_delay, nullptr));
-  PetscCall(PetscOptionsInt("-test_step_delay_after", "test hook: ... in the steps after this one",
-                            "scripts/stop_trials", run.step_delay_after, &run.step_delay_after,
-                            nullptr));
+  const OptionSpec &rtol = spec(Option::snes_reference_rtol),
+                   &fail_dt = spec(Option::test_fail_dt_above),
+                   &delay = spec(Option::test_step_delay),
+                   &delay_after = spec(Option::test_step_delay_after);
+  PetscCall(PetscOptionsReal(rtol.flag, rtol.help, rtol.doc, run.reference_rtol,
+                             &run.reference_rtol, nullptr));
+  PetscCall(PetscOptionsReal(fail_dt.flag, fail_dt.help, fail_dt.doc, run.fail_dt_above,
+                             &run.fail_dt_above, nullptr));
+  PetscCall(PetscOptionsReal(delay.flag, delay.help, delay.doc, run.step_delay, &run.step_delay,
+                             nullptr));
+  PetscCall(PetscOptionsInt(delay_after.flag, delay_after.help, delay_after.doc,
+                            run.step_delay_after, &run.step_delay_after, nullptr));
   PetscOptionsEnd();
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, &run, nullptr));
   PetscCall(SNESSetComputeInitialGuess(snes, chooseInitialGuess, &run));

@@ -1,6 +1,7 @@
 // Options typed that nothing reads, found before the first step or after the first linear
 // solve: see unused_options.hpp.
 #include "poroseam/unused_options.hpp"
+#include "poroseam/option_registry.hpp"
 
 #include "poroseam/option_check.hpp"
 #include "poroseam/solver_preset.hpp"
@@ -245,9 +246,8 @@ PetscErrorCode readUnusedOptionsOk(MPI_Comm comm, UnusedOptionCheck *check)
   PetscBool ok = check->warn_only ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "poroseam option check", "docs/input_errors.md");
-  PetscCall(PetscOptionsBool("-options_unused_ok",
-                             "options nothing reads are warned about, not an error",
-                             "docs/input_errors.md", ok, &ok, nullptr));
+  const OptionSpec &option = spec(Option::options_unused_ok);
+  PetscCall(PetscOptionsBool(option.flag, option.help, option.doc, ok, &ok, nullptr));
   PetscOptionsEnd();
   check->warn_only = ok;
   PetscFunctionReturn(0);
