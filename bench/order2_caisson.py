@@ -12,6 +12,7 @@ Timings are only comparable within one sitting (the machine may be shared): read
     scripts/bench --order2-caisson --factors 2,1.5,1 --steps 2 --repeats 2
     scripts/bench --order2-caisson --order 1 --factors 2,1.5,1
     scripts/bench --order2-caisson --fieldsplit-options "-fieldsplit_displacement_..._x 1"
+    scripts/bench --order2-caisson --options "-mesh_geometry_order 2" --factors 2,1.5,1.25
 
 Writes <output>/order2_caisson.csv (one row per run) and <output>/order2_caisson_table.csv (one
 row per mesh), and keeps each run's output in <output>/runs/."""
@@ -46,6 +47,8 @@ def arguments():
                    "time per step is the minimum over them (default %(default)s)")
     p.add_argument("--presets", default="fieldsplit,direct", help="default %(default)s")
     p.add_argument("--ranks", type=int, default=2, help="MPI ranks (default %(default)s)")
+    p.add_argument("--options", default="", help="extra options for every run (e.g. "
+                   "\"-mesh_geometry_order 2\", or another -mesh)")
     p.add_argument("--fieldsplit-options", default="", help="extra options for the fieldsplit "
                    "runs (to try a variant of the preset)")
     p.add_argument("--timeout", type=float, default=7200.0, help="seconds per run (default "
@@ -68,6 +71,7 @@ def one_run(a, factor, preset, repeat, build):
                "-mesh_size_factor", f"{factor:g}", "-ts_max_time", repr(a.steps * DT),
                "-output_fields_every", "1000", "-output_dir", run_dir,
                "-log_view", f":{os.path.join(run_dir, 'log_view.txt')}"]
+    command += shlex.split(a.options)
     if preset == "fieldsplit":
         command += shlex.split(a.fieldsplit_options)
     status, wall, out = programs.run(command, os.path.join(run_dir, "stdout.txt"), a.timeout,

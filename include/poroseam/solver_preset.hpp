@@ -3,7 +3,7 @@
 //   -solver_preset direct|fieldsplit|<name>   insert options/solvers/<name>.opts
 //   -solver_preset auto                       MUMPS LU (direct) unless the scene is 3D with more
 //                                             than -solver_auto_threshold unknowns (default
-//                                             30000 at -displacement_order 1, 150000 at 2),
+//                                             30000 at -displacement_order 1, 70000 at 2),
 //                                             then the iterative fieldsplit preset;
 //                                             nothing when -ksp_type or -pc_type is given (a
 //                                             preset file added with -options_file, say)
@@ -38,11 +38,11 @@ std::vector<std::string> solverPresetOptionNames();
 
 /// -solver_auto_threshold's default at a displacement order: where the fieldsplit preset
 /// starts to be faster than MUMPS on the 3D quarter caisson (2 ranks). Order 1: 30,000 (at 37k
-/// the preset took 0.8 of MUMPS's time per step, at 5k MUMPS was faster). Order 2: 150,000;
-/// measured (first step, the preset with its order coarsening): MUMPS 2.9x faster at 30k (mesh
-/// factor 2, idle machine), 1.56x at 87k (factor 1.5, load 6.5), 2.4x at 169k (the graded
-/// mesh, idle: 65 s against 158 s). So the threshold is set by memory, not speed: MUMPS took
-/// 2.8 GB per rank at 169k (fieldsplit 1.3 GB), and 150k keeps it well inside a 16 GB machine.
+/// the preset took 0.8 of MUMPS's time per step, at 5k MUMPS was faster). Order 2: 70,000;
+/// measured with curved cells (the preset with its order coarsening and stiff bodies, idle,
+/// first 2 steps, time per step, bench/order2_caisson.py): MUMPS 1.79x faster at 30k (mesh
+/// factor 2), 1.12x at 55k (1.75); the preset 1.15x faster at 87k (1.5), 2.0x at 144k (1.25),
+/// 1.05x at 169k on the graded mesh, with a third to a half of MUMPS's memory.
 long defaultAutoThreshold(int displacement_order);
 
 /// The preset -solver_preset takes: `preset` as given ("" when not given: auto), or for auto

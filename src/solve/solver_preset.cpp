@@ -121,7 +121,7 @@ std::string solverPresetList()
 
 long defaultAutoThreshold(int displacement_order)
 {
-  return displacement_order >= 2 ? 150000 : 30000;
+  return displacement_order >= 2 ? 70000 : 30000;
 }
 
 std::string chosenPreset(const std::string &preset, bool solver_named, int dim, double unknowns,

@@ -49,7 +49,8 @@ PetscErrorCode setUpStiffBodies(PC pc, const VertexBlockMap &map, Mat ext, Stiff
 {
   MPI_Comm comm = PetscObjectComm((PetscObject)ext);
   PetscFunctionBeginUser;
-  if (sb.ratio <= 0.0) PetscFunctionReturn(0);
+  if (sb.ratio < 0.0) sb.ratio = map.quadratic() ? kDefaultStiffRatio : 0.0; // not given
+  if (sb.ratio == 0.0) PetscFunctionReturn(0);
   if (!sb.block) {
     if (sb.rows) PetscFunctionReturn(0); // selected before: none is stiff
     std::vector<PetscInt> rows;
@@ -59,25 +60,30 @@ PetscErrorCode setUpStiffBodies(PC pc, const VertexBlockMap &map, Mat ext, Stiff
     PetscCall(ISGetSize(sb.rows, &sb.total_rows));
     if (sb.total_rows == 0) PetscFunctionReturn(0);
     PetscCall(MatCreateSubMatrix(ext, sb.rows, sb.rows, MAT_INITIAL_MATRIX, &sb.block));
-    PetscCall(MatCreateVecs(ext, nullptr, &sb.residual));
-    PetscCall(MatCreateVecs(sb.block, &sb.correction, nullptr));
+    PetscInt first, end; // all columns: each rank its own range, as MatCreateSubMatrix takes it
+    PetscCall(MatGetOwnershipRangeColumn(ext, &first, &end));
+    PetscCall(ISCreateStride(comm, end - first, first, 1, &sb.columns));
+    PetscCall(MatCreateSubMatrix(ext, sb.rows, sb.columns, MAT_INITIAL_MATRIX, &sb.rows_op));
+    PetscCall(MatCreateVecs(sb.block, &sb.correction, &sb.residual));
     PetscCall(createSolver(pc, comm, sb));
   } else {
     PetscCall(MatCreateSubMatrix(ext, sb.rows, sb.rows, MAT_REUSE_MATRIX, &sb.block));
+    PetscCall(MatCreateSubMatrix(ext, sb.rows, sb.columns, MAT_REUSE_MATRIX, &sb.rows_op));
   }
   PetscCall(KSPSetOperators(sb.solver, sb.block, sb.block));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode correctStiffBodies(const StiffBodies &sb, Mat ext, Vec b, Vec x)
+PetscErrorCode correctStiffBodies(const StiffBodies &sb, Vec b, Vec x)
 {
-  Vec r, xs;
+  Vec bs, xs;
   PetscFunctionBeginUser;
   if (!sb.block) PetscFunctionReturn(0);
-  PetscCall(MatResidual(ext, b, x, sb.residual));
-  PetscCall(VecGetSubVector(sb.residual, sb.rows, &r));
-  PetscCall(KSPSolve(sb.solver, r, sb.correction));
-  PetscCall(VecRestoreSubVector(sb.residual, sb.rows, &r));
+  PetscCall(MatMult(sb.rows_op, x, sb.residual)); // (A x)_s
+  PetscCall(VecGetSubVector(b, sb.rows, &bs));
+  PetscCall(VecAYPX(sb.residual, -1.0, bs)); // (b - A x)_s
+  PetscCall(VecRestoreSubVector(b, sb.rows, &bs));
+  PetscCall(KSPSolve(sb.solver, sb.residual, sb.correction));
   PetscCall(VecGetSubVector(x, sb.rows, &xs));
   PetscCall(VecAXPY(xs, 1.0, sb.correction));
   PetscCall(VecRestoreSubVector(x, sb.rows, &xs));
@@ -89,6 +95,8 @@ PetscErrorCode destroyStiffBodies(StiffBodies &sb)
   PetscFunctionBeginUser;
   PetscCall(ISDestroy(&sb.rows));
   PetscCall(MatDestroy(&sb.block));
+  PetscCall(MatDestroy(&sb.rows_op));
+  PetscCall(ISDestroy(&sb.columns));
   PetscCall(KSPDestroy(&sb.solver));
   PetscCall(VecDestroy(&sb.residual));
   PetscCall(VecDestroy(&sb.correction));

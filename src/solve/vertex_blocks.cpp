@@ -382,7 +382,7 @@ PetscErrorCode apply(PC pc, Vec x, Vec y)
     PetscCall(applyOrderCoarsening(vb->oc, vb->ext, vb->inner, vb->ext_rhs, vb->ext_sol));
   else
     PetscCall(PCApply(vb->inner, vb->ext_rhs, vb->ext_sol));
-  PetscCall(correctStiffBodies(vb->stiff, vb->ext, vb->ext_rhs, vb->ext_sol));
+  PetscCall(correctStiffBodies(vb->stiff, vb->ext_rhs, vb->ext_sol));
   const PetscScalar *sol;
   PetscScalar *out;
   PetscCall(VecGetArrayRead(vb->ext_sol, &sol));
@@ -462,7 +462,7 @@ PetscErrorCode setFromOptions(PC pc, PetscOptionItems *PetscOptionsObject)
   auto *vb = static_cast<VertexBlocksPC *>(pc->data);
   PetscInt lag = vb->coarse_lag;
   PetscBool coarsen = vb->order_coarsening;
-  PetscReal ratio = vb->stiff.ratio;
+  PetscReal ratio = vb->stiff.ratio < 0.0 ? kDefaultStiffRatio : vb->stiff.ratio;
   const char *prefix;
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "vertex_blocks: the displacement block by vertices");
@@ -474,18 +474,21 @@ PetscErrorCode setFromOptions(PC pc, PetscOptionItems *PetscOptionsObject)
                              "at -displacement_order 2: smooth the order-2 field, and hand the "
                              "order-1 field of the same mesh to the inner PC",
                              "docs/scenes.md", coarsen, &coarsen, nullptr));
+  PetscBool stiff_given = PETSC_FALSE;
   PetscCall(PetscOptionsReal("-vertex_blocks_stiff_ratio",
                              "solve the nodes of cells with E >= this x the smallest E exactly "
-                             "after each cycle (0: off)",
-                             "docs/scenes.md", ratio, &ratio, nullptr));
+                             "after each cycle (0: off; default 100 at -displacement_order 2, "
+                             "off at order 1)",
+                             "docs/scenes.md", ratio, &ratio, &stiff_given));
   PetscOptionsHeadEnd();
   vb->order_coarsening = coarsen;
   PetscCall(PCGetOptionsPrefix(pc, &prefix));
-  PetscCheck(ratio == 0.0 || ratio >= 1.0, PetscObjectComm((PetscObject)pc), PETSC_ERR_USER_INPUT,
+  PetscCheck(!stiff_given || ratio == 0.0 || ratio >= 1.0, PetscObjectComm((PetscObject)pc),
+             PETSC_ERR_USER_INPUT,
              "option -%svertex_blocks_stiff_ratio %g: expected 0 (off) or a ratio of Young's "
              "moduli >= 1",
              prefix ? prefix : "", (double)ratio);
-  vb->stiff.ratio = ratio;
+  if (stiff_given) vb->stiff.ratio = ratio;
   PetscCheck(lag >= 1, PetscObjectComm((PetscObject)pc), PETSC_ERR_USER_INPUT,
              "option -%svertex_blocks_coarse_lag %" PetscInt_FMT
              ": expected a number of set-ups >= 1",
