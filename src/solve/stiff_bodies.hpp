@@ -6,19 +6,20 @@
 // two cells of thickness, and the order-1 level of the order coarsening locks in bending
 // (order-1 hexahedra through a thin plate). The preset's outer FGMRES then spends most of its
 // iterations on that one body. Measured on the 3D quarter caisson at order 2 (mesh factor 2,
-// 30k unknowns, step 1, 2 ranks): 80 outer iterations per Newton iteration without, 33 with
-// the steel's 4,770 rows solved by LU after each cycle (the correction placed after the
-// pre-smoothing, after the coarse correction or after the whole cycle: 33, 33, 33).
+// 30k unknowns, step 1, 2 ranks): 80 outer iterations per Newton iteration without, 35 with
+// the steel's rows solved by LU after each cycle. (A first trial, which picked the rows by
+// their diagonal, put the correction after the pre-smoothing, after the coarse correction or
+// after the whole cycle: 33 each; it sits after the cycle, where it serves any inner PC.)
 //
 // Which nodes: those of cells whose region's Young's modulus is at least `ratio` times the
 // smallest of the mesh (-<prefix>vertex_blocks_stiff_ratio; 0 turns it off). Soil layers
-// differ by less, steel and soil by 1000. Default 100 at -displacement_order 2, off at order 1:
-// there GAMG on the order-1 field already sees the skirt (3D caisson, 37k unknowns, whole
-// run: 1249 instead of 1330 outer iterations, 58 instead of 61 Newton, but 51.6-51.9 s
-// instead of 48.8-49.4 s: the LU and its solves cost more than the 6 % they save). The block is the
-// extended operator restricted to those nodes (its decoupled constrained rows included), factorised
-// by LU (MUMPS on more than one rank) at every set-up; its solver takes the prefix
-// -<prefix>vertex_blocks_stiff_.
+// differ by less, steel and soil by 1000. Default 100 at -displacement_order 2, off at
+// order 1: there GAMG on the order-1 field already sees the skirt (3D caisson, 37k unknowns,
+// whole run: 1249 instead of 1330 outer iterations, 58 instead of 61 Newton, but 51.6-51.9 s
+// instead of 48.8-49.4 s: the LU and its solves cost more than the 6 % they save).
+// The block is the extended operator restricted to those nodes (its decoupled constrained
+// rows included), factorised by LU (MUMPS on more than one rank) at every set-up; its solver
+// takes the prefix -<prefix>vertex_blocks_stiff_.
 //
 // One correction: x += A_ss^-1 (b - A x)_s on the stiff rows s, a multiplicative block
 // Gauss-Seidel step after the inner PC's cycle. The residual is computed on those rows only.
