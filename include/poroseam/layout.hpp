@@ -33,6 +33,11 @@ std::string boundaryLabelName(const std::string &boundary);
 PetscErrorCode lateralEdgesOnBoundary(DM dm, const std::string &boundary,
                                       std::vector<PetscInt> &edges);
 
+/// The points whose unknowns the Dirichlet condition `bc` prescribes on this rank: the lateral
+/// edges of -bc_<b>_p3 (lateralEdgesOnBoundary), else the points of the boundary's label. The
+/// one rule shared by the section's constraints and the prescribed values.
+PetscErrorCode dirichletPoints(DM dm, const BoundaryCondition &bc, std::vector<PetscInt> &points);
+
 /// Before distribution: marks the closure of porous cells and of every scene boundary.
 PetscErrorCode markLayoutLabels(DM dm, const Scene &scene);
 

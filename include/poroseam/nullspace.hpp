@@ -9,6 +9,8 @@
 
 namespace poroseam {
 
+class Problem;
+
 /// The rigid-body modes (3 in 2D, 6 in 3D; axisymmetric: the 2 translations) of the
 /// displacement at every displacement node, restricted to the free dofs of the split
 /// `displacement` (global indices) and orthonormalised: the near null space of the elastic
@@ -26,7 +28,9 @@ PetscErrorCode orthonormalize(std::vector<Vec> &vectors);
 /// the interface pressures together: a Schur complement takes exactly two splits).
 /// Call after TSSetFromOptions. With a fieldsplit, *jacobian_diagonal becomes a global vector
 /// that the caller must fill with the Jacobian's diagonal at every assembly (the displacement
-/// preconditioner vertex_blocks needs it); otherwise it stays null.
-PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobian_diagonal);
+/// preconditioner vertex_blocks needs it); otherwise it stays null. `problem` (set up) gives
+/// the region of each bulk cell, whose Young's modulus marks vertex_blocks' stiff bodies.
+PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, const Problem &problem,
+                                   Vec *jacobian_diagonal);
 
 } // namespace poroseam

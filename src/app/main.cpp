@@ -1,10 +1,10 @@
 // poroseam: hydro-mechanical finite elements for saturated soils, on PETSc.
 //   mpiexec -n 2 poroseam -options_file options/<scene>.opts [PETSc options]
-#include "poroseam/help_filter.hpp"
-#include "poroseam/output_directory.hpp"
 #include "poroseam/given_options.hpp"
+#include "poroseam/help_filter.hpp"
 #include "poroseam/option_registry.hpp"
 #include "poroseam/options_file.hpp"
+#include "poroseam/output_directory.hpp"
 #include "poroseam/run_options.hpp"
 #include "poroseam/scene.hpp"
 #include "poroseam/simulation.hpp"

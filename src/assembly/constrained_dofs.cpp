@@ -17,41 +17,22 @@ PetscErrorCode Problem::collectConstrainedDofs()
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(dm_, &s));
   PetscCall(PetscSectionGetNumFields(s, &numFields));
+  std::vector<PetscInt> points;
   for (size_t i = 0; i < scene.conditions.size(); ++i) {
     const auto &bc = scene.conditions[i];
     if (!bc.dirichlet()) continue;
-    DMLabel label;
-    PetscCall(DMGetLabel(dm_, boundaryLabelName(bc.boundary).c_str(), &label));
-    if (bc.kind == BcKind::interface_pressure) {
-      std::vector<PetscInt> edges;
-      PetscCall(lateralEdgesOnBoundary(dm_, bc.boundary, edges));
-      for (PetscInt e : edges) {
-        PetscInt dof = 0, off = 0;
-        PetscCall(PetscSectionGetFieldDof(s, e, kInterfacePressureField, &dof));
-        if (!dof) continue;
-        PetscCall(PetscSectionGetFieldOffset(s, e, kInterfacePressureField, &off));
-        constrained_.push_back({off, (int)i});
-      }
-      continue;
-    }
-    IS points = nullptr;
-    PetscCall(DMLabelGetStratumIS(label, 1, &points));
-    if (!points) continue;
-    const PetscInt *idx;
-    PetscInt n;
-    PetscCall(ISGetLocalSize(points, &n));
-    PetscCall(ISGetIndices(points, &idx));
-    const int field = bc.kind == BcKind::pressure ? kPressureField : kDisplacementField;
-    for (PetscInt k = 0; k < n; ++k) {
+    const int field = bc.kind == BcKind::interface_pressure ? kInterfacePressureField
+                      : bc.kind == BcKind::pressure         ? kPressureField
+                                                            : kDisplacementField;
+    if (field >= numFields) continue;
+    PetscCall(dirichletPoints(dm_, bc, points));
+    for (PetscInt point : points) {
       PetscInt dof = 0, off = 0;
-      if (field >= numFields) continue;
-      PetscCall(PetscSectionGetFieldDof(s, idx[k], field, &dof));
+      PetscCall(PetscSectionGetFieldDof(s, point, field, &dof));
       if (!dof) continue;
-      PetscCall(PetscSectionGetFieldOffset(s, idx[k], field, &off));
+      PetscCall(PetscSectionGetFieldOffset(s, point, field, &off));
       constrained_.push_back({off + (field == kDisplacementField ? bc.component : 0), (int)i});
     }
-    PetscCall(ISRestoreIndices(points, &idx));
-    PetscCall(ISDestroy(&points));
   }
   PetscFunctionReturn(0);
 }

@@ -157,6 +157,29 @@ PetscErrorCode inLabel(DMLabel label, PetscInt point, bool *in)
 
 } // namespace
 
+PetscErrorCode dirichletPoints(DM dm, const BoundaryCondition &bc, std::vector<PetscInt> &points)
+{
+  PetscFunctionBeginUser;
+  points.clear();
+  if (bc.kind == BcKind::interface_pressure) {
+    PetscCall(lateralEdgesOnBoundary(dm, bc.boundary, points));
+    PetscFunctionReturn(0);
+  }
+  DMLabel label;
+  IS stratum = nullptr;
+  PetscCall(DMGetLabel(dm, boundaryLabelName(bc.boundary).c_str(), &label));
+  PetscCall(DMLabelGetStratumIS(label, 1, &stratum));
+  if (!stratum) PetscFunctionReturn(0);
+  const PetscInt *idx;
+  PetscInt n;
+  PetscCall(ISGetLocalSize(stratum, &n));
+  PetscCall(ISGetIndices(stratum, &idx));
+  points.assign(idx, idx + n);
+  PetscCall(ISRestoreIndices(stratum, &idx));
+  PetscCall(ISDestroy(&stratum));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
 {
   const int dim = scene.dim;
@@ -174,29 +197,15 @@ PetscErrorCode createSolutionSection(DM dm, const Scene &scene)
   // Constrained components per point: bits 0..dim-1 displacement, bit dim pressure,
   // bit dim + 1 interface pressure.
   std::vector<unsigned> constrained(pEnd - pStart, 0u);
+  std::vector<PetscInt> points;
   for (const auto &bc : scene.conditions) {
     if (!bc.dirichlet()) continue;
-    DMLabel label;
-    PetscCall(DMGetLabel(dm, boundaryLabelName(bc.boundary).c_str(), &label));
-    if (bc.kind == BcKind::interface_pressure) {
-      std::vector<PetscInt> edges;
-      PetscCall(lateralEdgesOnBoundary(dm, bc.boundary, edges));
-      for (PetscInt e : edges)
-        constrained[e - pStart] |= 1u << (dim + 1);
-      continue;
-    }
-    IS points = nullptr;
-    PetscCall(DMLabelGetStratumIS(label, 1, &points));
-    if (!points) continue;
-    const PetscInt *idx;
-    PetscInt n;
-    PetscCall(ISGetLocalSize(points, &n));
-    PetscCall(ISGetIndices(points, &idx));
-    const unsigned bit = bc.kind == BcKind::pressure ? 1u << dim : 1u << bc.component;
-    for (PetscInt i = 0; i < n; ++i)
-      constrained[idx[i] - pStart] |= bit;
-    PetscCall(ISRestoreIndices(points, &idx));
-    PetscCall(ISDestroy(&points));
+    PetscCall(dirichletPoints(dm, bc, points));
+    const unsigned bit = bc.kind == BcKind::interface_pressure ? 1u << (dim + 1)
+                         : bc.kind == BcKind::pressure         ? 1u << dim
+                                                               : 1u << bc.component;
+    for (PetscInt p : points)
+      constrained[p - pStart] |= bit;
   }
 
   PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));

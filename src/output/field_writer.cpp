@@ -332,8 +332,8 @@ PetscErrorCode FieldWriter::open(DM solution_dm, const std::string &dir,
     PetscCall(PetscViewerHDF5Open(comm, im.h5Path.c_str(),
                                   resume ? FILE_MODE_APPEND : FILE_MODE_WRITE, &im.viewer));
     PetscCall(im.writeVertexVec("/geometry", "vertices", im.mesh.cdim, xyz, "m", 0.0, false));
-    PetscCall(xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.mesh.nodesPerCell,
-                               cells, "1"));
+    PetscCall(
+        xdmf::writeInts(im.viewer, comm, "/topology", "cells", im.mesh.nodesPerCell, cells, "1"));
     PetscCall(PetscViewerFlush(im.viewer));
     PetscFunctionReturn(0);
   }));

@@ -38,21 +38,38 @@ const char *const kInterfaceKeys[] = {
 #undef POROSEAM_INTERFACE_KEY
 };
 
-template <std::size_t N>
-std::vector<std::string> all(const char *const (&keys)[N])
+template <std::size_t N> std::vector<std::string> all(const char *const (&keys)[N])
 {
   return std::vector<std::string>(std::begin(keys), std::end(keys));
 }
 
 } // namespace
 
-const char *key(RegionKey k) { return kRegionKeys[static_cast<std::size_t>(k)]; }
-const char *key(BoundaryKey k) { return kBoundaryKeys[static_cast<std::size_t>(k)]; }
-const char *key(InterfaceKey k) { return kInterfaceKeys[static_cast<std::size_t>(k)]; }
+const char *key(RegionKey k)
+{
+  return kRegionKeys[static_cast<std::size_t>(k)];
+}
+const char *key(BoundaryKey k)
+{
+  return kBoundaryKeys[static_cast<std::size_t>(k)];
+}
+const char *key(InterfaceKey k)
+{
+  return kInterfaceKeys[static_cast<std::size_t>(k)];
+}
 
-std::vector<std::string> regionKeys() { return all(kRegionKeys); }
-std::vector<std::string> boundaryQuantities() { return all(kBoundaryKeys); }
-std::vector<std::string> interfaceKeys() { return all(kInterfaceKeys); }
+std::vector<std::string> regionKeys()
+{
+  return all(kRegionKeys);
+}
+std::vector<std::string> boundaryQuantities()
+{
+  return all(kBoundaryKeys);
+}
+std::vector<std::string> interfaceKeys()
+{
+  return all(kInterfaceKeys);
+}
 
 const OptionSpec &spec(Option option)
 {

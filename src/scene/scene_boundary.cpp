@@ -15,6 +15,7 @@
 #include <petscsys.h>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace poroseam {
 
@@ -91,8 +92,15 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
   const std::string p = "-bc_" + b.name + "_";
   const char *comps[3] = {key(BoundaryKey::ux), key(BoundaryKey::uy), key(BoundaryKey::uz)};
   PetscFunctionBeginUser;
-  auto add = [&](BoundaryCondition bc) -> PetscErrorCode {
+  // One condition of this boundary, defined by the option p + q.
+  auto add = [&](BcKind kind, const char *q, std::vector<double> value,
+                 int component) -> PetscErrorCode {
     PetscFunctionBeginUser;
+    BoundaryCondition bc;
+    bc.kind = kind;
+    bc.component = component;
+    bc.value = std::move(value);
+    bc.option = p + q;
     bc.boundary = b.name;
     bc.tag = b.tag;
     bc.support_dim = b.support_dim;
@@ -124,26 +132,18 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
     PetscCheck(c < scene.dim, comm, PETSC_ERR_USER_INPUT,
                "%s%s: the mesh is %dD, it has no %s component", p.c_str(), comps[c], scene.dim,
                comps[c]);
-    BoundaryCondition bc;
-    bc.kind = BcKind::displacement;
-    bc.component = c;
-    bc.value = {v};
-    bc.option = p + comps[c];
-    PetscCall(add(bc));
+    PetscCall(add(BcKind::displacement, comps[c], {v}, c));
   }
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(condition(key(BoundaryKey::p), "prescribed pore pressure [Pa] (absolute: hydrostatic included)",
+    PetscCall(condition(key(BoundaryKey::p),
+                        "prescribed pore pressure [Pa] (absolute: hydrostatic included)",
                         scene.hasPressure(), &v, &set));
     if (set) {
       PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
                  "%sp: the scene has no pressure unknowns (drained, or no biot region)", p.c_str());
-      BoundaryCondition bc;
-      bc.kind = BcKind::pressure;
-      bc.value = {v};
-      bc.option = p + key(BoundaryKey::p);
-      PetscCall(add(bc));
+      PetscCall(add(BcKind::pressure, key(BoundaryKey::p), {v}, 0));
     }
   }
   {
@@ -156,11 +156,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
     if (set) {
       PetscCheck(scene.hasInterfacePressure(), comm, PETSC_ERR_USER_INPUT,
                  "%sp3: no interface of the scene has flow (-interface_<i>_flow)", p.c_str());
-      BoundaryCondition bc;
-      bc.kind = BcKind::interface_pressure;
-      bc.value = {v};
-      bc.option = p + key(BoundaryKey::p3);
-      PetscCall(add(bc));
+      PetscCall(add(BcKind::interface_pressure, key(BoundaryKey::p3), {v}, 0));
     }
   }
   {
@@ -186,11 +182,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
             "give one of them (or split the boundary in the mesh)",
             c.option.c_str(), p.c_str(), b.name.c_str(), comps[c.component], "xyz"[c.component],
             c.component + 1, p.c_str(), number(v[c.component]).c_str());
-      BoundaryCondition bc;
-      bc.kind = BcKind::traction;
-      bc.value = v;
-      bc.option = p + key(BoundaryKey::traction);
-      PetscCall(add(bc));
+      PetscCall(add(BcKind::traction, key(BoundaryKey::traction), v, 0));
     }
   }
   {
@@ -208,17 +200,14 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
                    "%spressure and %straction on the same boundary '%s': give the load as one "
                    "of them (a pressure is the traction -P n), or split the boundary in the mesh",
                    p.c_str(), p.c_str(), b.name.c_str());
-      BoundaryCondition bc;
-      bc.kind = BcKind::normal_pressure;
-      bc.value = {v};
-      bc.option = p + key(BoundaryKey::pressure);
-      PetscCall(add(bc));
+      PetscCall(add(BcKind::normal_pressure, key(BoundaryKey::pressure), {v}, 0));
     }
   }
   {
     double v = 0.0;
     bool set = false;
-    PetscCall(condition(key(BoundaryKey::flux), "outward Darcy flux q.n [m/s] (positive: water leaves)",
+    PetscCall(condition(key(BoundaryKey::flux),
+                        "outward Darcy flux q.n [m/s] (positive: water leaves)",
                         scene.hasPressure(), &v, &set));
     if (set) {
       PetscCheck(scene.hasPressure(), comm, PETSC_ERR_USER_INPUT,
@@ -232,11 +221,7 @@ PetscErrorCode readBoundary(PetscOptionItems *PetscOptionsObject, MPI_Comm comm,
                  "%sflux and %sp on the same boundary '%s': a prescribed pressure leaves no "
                  "flux to prescribe; give one of them (or split the boundary in the mesh)",
                  p.c_str(), p.c_str(), b.name.c_str());
-      BoundaryCondition bc;
-      bc.kind = BcKind::flux;
-      bc.value = {v};
-      bc.option = p + key(BoundaryKey::flux);
-      PetscCall(add(bc));
+      PetscCall(add(BcKind::flux, key(BoundaryKey::flux), {v}, 0));
     }
   }
   // A physical point or curve is a support: it holds displacements, it takes no load (a load

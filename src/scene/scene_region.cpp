@@ -97,8 +97,8 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
              "ratio of horizontal to vertical effective stress at rest)",
              r.k0_origin.c_str(), p.c_str());
   if (r.porous()) {
-    PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::porosity), "porosity n [-], in [0, 1)", &r.porosity,
-                      nullptr));
+    PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::porosity), "porosity n [-], in [0, 1)",
+                      &r.porosity, nullptr));
     PetscCheck(r.porosity >= 0.0 && r.porosity < 1.0, comm, PETSC_ERR_USER_INPUT,
                "%sporosity = %g: must lie in [0, 1)", p.c_str(), r.porosity);
     if (!drained) {
@@ -112,8 +112,8 @@ PetscErrorCode readRegion(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, R
     }
     PetscCheck(r.permeability >= 0.0, comm, PETSC_ERR_USER_INPUT,
                "%spermeability = %g: must be >= 0", p.c_str(), r.permeability);
-    PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::biot_alpha), "Biot coefficient alpha [-], in (0, 1]",
-                      &r.biot_coefficient, nullptr));
+    PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::biot_alpha),
+                      "Biot coefficient alpha [-], in (0, 1]", &r.biot_coefficient, nullptr));
     PetscCheck(r.biot_coefficient > 0.0 && r.biot_coefficient <= 1.0, comm, PETSC_ERR_USER_INPUT,
                "%sbiot_alpha = %g: must lie in (0, 1]", p.c_str(), r.biot_coefficient);
     PetscCall(getReal(PetscOptionsObject, p + key(RegionKey::storage),

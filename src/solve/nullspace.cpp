@@ -1,6 +1,7 @@
 #include "poroseam/nullspace.hpp"
 
 #include "poroseam/layout.hpp"
+#include "poroseam/problem.hpp"
 #include "poroseam/scene.hpp"
 #include "poroseam/vertex_blocks.hpp"
 
@@ -150,28 +151,28 @@ PetscErrorCode nameInnerSplits(KSP ksp, Vec, Vec, void *ctx)
   PetscFunctionReturn(0);
 }
 
-/// Young's modulus of each cell's region (0 for the interfaces' cohesive cells, which belong
-/// to no region), for the stiff bodies of vertex_blocks.
-PetscErrorCode cellModuli(DM dm, const Scene &scene, std::vector<PetscReal> &modulus)
+/// Young's modulus of each cell's region, from the problem's bulk cells (0 for the
+/// interfaces' cohesive cells, which belong to no region), for the stiff bodies of
+/// vertex_blocks.
+PetscErrorCode cellModuli(DM dm, const Scene &scene, const Problem &problem,
+                          std::vector<PetscReal> &modulus)
 {
-  DMLabel cell_sets;
   PetscInt cStart, cEnd;
+  std::vector<PetscInt> cells;
+  std::vector<int> regions;
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  PetscCall(DMGetLabel(dm, "Cell Sets", &cell_sets));
   modulus.assign(cEnd - cStart, 0.0);
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    PetscInt tag = -1;
-    if (cell_sets) PetscCall(DMLabelGetValue(cell_sets, c, &tag));
-    const int r = scene.regionIndexOfTag((int)tag);
-    if (r >= 0) modulus[c - cStart] = scene.regions[r].young;
-  }
+  problem.cellRegions(cells, regions);
+  for (size_t i = 0; i < cells.size(); ++i)
+    modulus[cells[i] - cStart] = scene.regions[regions[i]].young;
   PetscFunctionReturn(0);
 }
 
 } // namespace
 
-PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobian_diagonal)
+PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, const Problem &problem,
+                                   Vec *jacobian_diagonal)
 {
   SNES snes;
   KSP ksp;
@@ -192,7 +193,7 @@ PetscErrorCode configureFieldSplit(TS ts, DM dm, const Scene &scene, Vec *jacobi
                                        fields[kDisplacementField], &modes));
   PetscCall(DMCreateGlobalVector(dm, jacobian_diagonal));
   std::vector<PetscReal> cell_modulus;
-  PetscCall(cellModuli(dm, scene, cell_modulus));
+  PetscCall(cellModuli(dm, scene, problem, cell_modulus));
   PetscCall(attachVertexBlocks(dm, scene.dim, scene.axisymmetric, fields[kDisplacementField], modes,
                                ksp, *jacobian_diagonal, cell_modulus));
   PetscCall(PetscObjectCompose((PetscObject)fields[kDisplacementField], "nearnullspace",

@@ -84,7 +84,7 @@ PetscErrorCode applySolverOptions(MPI_Comm comm, Run &run, SNES snes)
   PetscCall(run.time.beforeOptions(run.ts));
   PetscCall(TSSetFromOptions(run.ts));
   PetscCall(checkTimeSteppingOptions(run.ts)); // -ts_max_time/_steps > 0, -ts_max_reject >= 0
-  PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, &run.jacobian_diagonal));
+  PetscCall(configureFieldSplit(run.ts, run.dm, run.scene, run.problem, &run.jacobian_diagonal));
   PetscCall(configureLineSearch(run, snes));         // contact kinks (newton_control.cpp)
   PetscCall(configureKeepPreconditioner(run, snes)); // linear scenes (newton_control.cpp)
   {
